@@ -1,0 +1,64 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+namespace hair {
+
+/// Which rule decided the root-to-tip direction of a strand group.
+enum class OrientationRule : int8_t {
+  vertex_order = 0,    ///< vertex ids grow from root to tip (the paper's assumption, sec. 3)
+  scalp_distance = 1,  ///< the end nearer the head surface is the root
+  uv = 2,              ///< the texture's v runs root to tip as on the mesh's other patches
+  height = 3,          ///< the higher end is the root (hair falls)
+};
+
+/// What a region of rails (consistently oriented chains of one patch) says about its
+/// direction, for the chains as they are. Positive values favour keeping them.
+struct OrientationEvidence {
+  /// Length-weighted vote of the ordered rails (rails whose vertex ids grow, or fall,
+  /// in most steps): (grow - fall) / (grow + fall), in [-1, 1]; 0 without ordered rails.
+  double vertex_order_vote = 0;
+  bool has_ordered_rails = false;
+  /// sum over rails of (head distance at the last point - at the first) / sum of lengths.
+  double scalp_distance_slope = 0;
+  /// Mean signed growth of texture v along the rails, per unit of texture motion, in
+  /// [-1, 1]; nullopt without texture coordinates.
+  std::optional<double> uv_growth;
+  /// sum over rails of (height of the first point - height of the last) / sum of lengths.
+  double height_slope = 0;
+};
+
+/// Thresholds of the decision; see decide_orientation().
+struct OrientationThresholds {
+  double vertex_order_min_vote = 0.8;      ///< |vote| for the ordered rails to agree (90%)
+  double scalp_distance_min_slope = 0.2;   ///< |slope| for the head distance to decide
+  double uv_min_growth = 0.3;              ///< |uv growth| for the texture to decide
+};
+
+/// What the rest of the mesh says, learnt from its confidently decided regions.
+struct MeshConventions {
+  bool trust_vertex_order = true;       ///< false when geometry contradicts the ids mostly
+  std::optional<int> uv_growth_sign;    ///< sign of v growth from root to tip, if consistent
+};
+
+struct OrientationDecision {
+  bool reverse = false;  ///< reverse the chains so that they run root to tip
+  OrientationRule rule = OrientationRule::height;
+  float confidence = 0;  ///< in [0, 1]
+};
+
+/// Decides a region's direction (DESIGN: "check vertex order per patch, fall back on
+/// geometry where it is inconsistent"):
+///  1. ordered rails that agree decide (vertex_order), unless the head distance decides
+///     the other way, or the mesh's ids are not to be trusted;
+///  2. else a decisive head-distance slope decides (scalp_distance);
+///  3. else the texture's v growth, if the mesh has a consistent convention (uv);
+///  4. else the higher end is the root (height).
+/// Without `conventions` (the first pass, which learns them) steps 3 and 4 return
+/// nullopt.
+std::optional<OrientationDecision> decide_orientation(
+    const OrientationEvidence& evidence, const OrientationThresholds& thresholds,
+    const std::optional<MeshConventions>& conventions);
+
+}  // namespace hair

@@ -1,0 +1,106 @@
+#include "hair/triangle_mesh_distance.h"
+
+#include <algorithm>
+#include <limits>
+#include <nanoflann.hpp>
+
+namespace hair {
+
+struct TriangleMeshDistance::Index {
+  /// nanoflann dataset adaptor over the triangle centroids.
+  struct Centroids {
+    std::vector<Eigen::Vector3d> points;
+    size_t kdtree_get_point_count() const { return points.size(); }
+    double kdtree_get_pt(size_t i, size_t dim) const { return points[i][static_cast<int>(dim)]; }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const {
+      return false;
+    }
+  };
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<
+      nanoflann::L2_Simple_Adaptor<double, Centroids>, Centroids, 3>;
+
+  std::vector<std::array<Eigen::Vector3d, 3>> corners;
+  Centroids centroids;
+  std::unique_ptr<Tree> tree;
+  size_t candidate_count = 16;
+};
+
+TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles,
+                                           int candidate_count)
+    : index_(std::make_unique<Index>()) {
+  index_->candidate_count =
+      std::min<size_t>(static_cast<size_t>(std::max(1, candidate_count)),
+                       static_cast<size_t>(triangles.rows()));
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
+    std::array<Eigen::Vector3d, 3> corner;
+    for (int k = 0; k < 3; ++k) corner[k] = vertices.row(triangles(t, k)).cast<double>().transpose();
+    index_->corners.push_back(corner);
+    index_->centroids.points.push_back((corner[0] + corner[1] + corner[2]) / 3.0);
+  }
+  index_->tree = std::make_unique<Index::Tree>(3, index_->centroids,
+                                               nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  index_->tree->buildIndex();
+}
+
+TriangleMeshDistance::~TriangleMeshDistance() = default;
+TriangleMeshDistance::TriangleMeshDistance(TriangleMeshDistance&&) noexcept = default;
+TriangleMeshDistance& TriangleMeshDistance::operator=(TriangleMeshDistance&&) noexcept = default;
+
+TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3d& point) const {
+  size_t count = index_->candidate_count;
+  std::vector<size_t> ids(count);
+  std::vector<double> squared(count);
+  count = index_->tree->knnSearch(point.data(), count, ids.data(), squared.data());
+  Nearest best;
+  best.distance = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < count; ++i) {
+    const auto& c = index_->corners[ids[i]];
+    Eigen::Vector3d closest = closest_point_on_triangle(point, c[0], c[1], c[2]);
+    double distance = (closest - point).norm();
+    if (distance < best.distance ||
+        (distance == best.distance && static_cast<int32_t>(ids[i]) < best.triangle)) {
+      best = {distance, static_cast<int32_t>(ids[i]), closest};
+    }
+  }
+  return best;
+}
+
+Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                          const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  Eigen::Vector3d bp = p - b;
+  double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  Eigen::Vector3d cp = p - c;
+  double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  double denominator = va + vb + vc;
+  if (denominator <= 0) return a;  // degenerate triangle
+  double v = vb / denominator, w = vc / denominator;
+  return a + ab * v + ac * w;
+}
+
+Triangles3i fan_triangulation(const std::vector<int64_t>& face_offsets,
+                              const std::vector<int32_t>& face_vertices) {
+  int64_t triangle_count = 0;
+  for (size_t f = 0; f + 1 < face_offsets.size(); ++f)
+    triangle_count += std::max<int64_t>(0, face_offsets[f + 1] - face_offsets[f] - 2);
+  Triangles3i triangles(triangle_count, 3);
+  Eigen::Index t = 0;
+  for (size_t f = 0; f + 1 < face_offsets.size(); ++f)
+    for (int64_t c = face_offsets[f] + 1; c + 1 < face_offsets[f + 1]; ++c)
+      triangles.row(t++) << face_vertices[face_offsets[f]], face_vertices[c], face_vertices[c + 1];
+  return triangles;
+}
+
+}  // namespace hair
