@@ -11,6 +11,7 @@ enum class OrientationRule : int8_t {
   scalp_distance = 1,  ///< the end nearer the head surface is the root
   uv = 2,              ///< the texture's v runs root to tip as on the mesh's other patches
   height = 3,          ///< the higher end is the root (hair falls)
+  parting = 4,         ///< rails draped over the head or looped: the top is the root
 };
 
 /// What a region of rails (consistently oriented chains of one patch) says about its

@@ -49,7 +49,7 @@ TriangleMeshDistance& TriangleMeshDistance::operator=(TriangleMeshDistance&&) no
 
 TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3d& point) const {
   size_t count = index_->candidate_count;
-  std::vector<size_t> ids(count);
+  std::vector<uint32_t> ids(count);
   std::vector<double> squared(count);
   count = index_->tree->knnSearch(point.data(), count, ids.data(), squared.data());
   Nearest best;
