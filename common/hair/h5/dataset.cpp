@@ -1,0 +1,169 @@
+#include "hair/h5/dataset.h"
+
+#include <algorithm>
+
+namespace hair::h5 {
+
+namespace {
+
+std::vector<hsize_t> to_hsize(const Shape& shape) {
+  return std::vector<hsize_t>(shape.begin(), shape.end());
+}
+
+/// The chunk shape of a dataset: the caller's (clamped to the extents) or, for more than
+/// kContiguousLimit elements, whole rows of the first dimension adding up to about
+/// kTargetChunkBytes; empty for contiguous storage.
+Shape chosen_chunk_shape(const Shape& shape, size_t element_bytes, const Shape& requested,
+                         const std::string& file_name, const std::string& path) {
+  const bool is_empty = std::any_of(shape.begin(), shape.end(), [](int64_t n) { return n == 0; });
+  if (!requested.empty()) {
+    if (requested.size() != shape.size() ||
+        std::any_of(requested.begin(), requested.end(), [](int64_t n) { return n <= 0; })) {
+      throw Error(ErrorKind::runtime, file_name, path,
+                  "chunk shape " + format_shape(requested) + " does not fit data of shape " +
+                      format_shape(shape));
+    }
+    if (is_empty) return {};
+    Shape chunk = requested;
+    for (size_t axis = 0; axis < shape.size(); ++axis)
+      chunk[axis] = std::min(chunk[axis], shape[axis]);
+    return chunk;
+  }
+  if (is_empty || element_count(shape) <= kContiguousLimit) return {};
+  const int64_t row_bytes =
+      element_count(Shape(shape.begin() + 1, shape.end())) * static_cast<int64_t>(element_bytes);
+  Shape chunk = shape;
+  chunk[0] = std::clamp<int64_t>(kTargetChunkBytes / row_bytes, 1, shape[0]);
+  return chunk;
+}
+
+/// Dataset creation properties: untimed, and chunked + shuffle + deflate if `chunk` is set.
+Handle dataset_properties(const Shape& chunk) {
+  Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  H5Pset_obj_track_times(properties.get(), false);
+  if (!chunk.empty()) {
+    const std::vector<hsize_t> chunk_dims = to_hsize(chunk);
+    H5Pset_chunk(properties.get(), static_cast<int>(chunk_dims.size()), chunk_dims.data());
+    H5Pset_shuffle(properties.get());
+    H5Pset_deflate(properties.get(), kDeflateLevel);
+  }
+  return properties;
+}
+
+/// The extents of an open dataset.
+Shape dataset_shape(hid_t dataset) {
+  const Handle space(H5Dget_space(dataset), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  std::vector<hsize_t> dims(static_cast<size_t>(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  return Shape(dims.begin(), dims.end());
+}
+
+/// "shuffle", "deflate(4)", ... for each filter of a dataset creation property list.
+std::vector<std::string> filter_names(hid_t properties) {
+  std::vector<std::string> names;
+  const int count = H5Pget_nfilters(properties);
+  for (int index = 0; index < count; ++index) {
+    unsigned flags = 0;
+    size_t value_count = 4;
+    unsigned values[4] = {0, 0, 0, 0};
+    char name[64] = {0};
+    const H5Z_filter_t filter = H5Pget_filter2(properties, static_cast<unsigned>(index), &flags,
+                                               &value_count, values, sizeof(name), name, nullptr);
+    if (filter == H5Z_FILTER_DEFLATE) {
+      names.push_back("deflate(" + std::to_string(value_count > 0 ? values[0] : 0) + ")");
+    } else if (filter == H5Z_FILTER_SHUFFLE) {
+      names.push_back("shuffle");
+    } else {
+      names.push_back(name[0] != 0 ? name : "filter " + std::to_string(filter));
+    }
+  }
+  return names;
+}
+
+}  // namespace
+
+std::string format_shape(const Shape& shape) {
+  std::string text = "[";
+  for (size_t axis = 0; axis < shape.size(); ++axis) {
+    if (axis > 0) text += ", ";
+    text += std::to_string(shape[axis]);
+  }
+  return text + "]";
+}
+
+int64_t element_count(const Shape& shape) {
+  int64_t count = 1;
+  for (const int64_t extent : shape) count *= extent;
+  return count;
+}
+
+DatasetInfo dataset_info(const File& file, const std::string& path) {
+  const Handle dataset = file.open_dataset(path);
+  const Handle type(H5Dget_type(dataset.get()), H5Tclose);
+  DatasetInfo info;
+  info.type_name = stored_type_name(type.get());
+  info.dtype = dtype_of_stored(type.get());
+  info.is_enum = H5Tget_class(type.get()) == H5T_ENUM;
+  info.shape = dataset_shape(dataset.get());
+  const Handle properties(H5Dget_create_plist(dataset.get()), H5Pclose);
+  if (H5Pget_layout(properties.get()) == H5D_CHUNKED) {
+    std::vector<hsize_t> chunk(info.shape.size());
+    H5Pget_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data());
+    info.chunk_shape = Shape(chunk.begin(), chunk.end());
+  }
+  info.filters = filter_names(properties.get());
+  return info;
+}
+
+void write_raw_dataset(File& file, const std::string& path, hid_t stored_type, hid_t memory_type,
+                       const void* values, const Shape& shape, const DatasetOptions& options) {
+  if (shape.empty())
+    throw Error(ErrorKind::runtime, file.name(), path, "cannot write a rank-0 dataset");
+  file.create_group(parent_path(path));
+  const Shape chunk =
+      chosen_chunk_shape(shape, H5Tget_size(memory_type), options.chunk_shape, file.name(), path);
+  const std::vector<hsize_t> dims = to_hsize(shape);
+  const Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+                     H5Sclose);
+  const Handle properties = dataset_properties(chunk);
+  const Handle dataset(H5Dcreate2(file.id(), path.c_str(), stored_type, space.get(), H5P_DEFAULT,
+                                  properties.get(), H5P_DEFAULT),
+                       H5Dclose);
+  if (!dataset.valid()) {
+    throw Error(ErrorKind::runtime, file.name(), path, with_hdf5_message("cannot create dataset"));
+  }
+  if (element_count(shape) > 0 &&
+      H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0) {
+    throw Error(ErrorKind::runtime, file.name(), path, with_hdf5_message("cannot write dataset"));
+  }
+}
+
+template <typename T>
+Array<T> read_array(const File& file, const std::string& path) {
+  const Handle dataset = file.open_dataset(path);
+  const Handle type(H5Dget_type(dataset.get()), H5Tclose);
+  constexpr Dtype expected = dtype_of<T>();
+  if (dtype_of_stored(type.get()) != expected) {
+    throw Error::bad_dataset(file.name(), path,
+                             "expected " + std::string(dtype_name(expected)) + ", found " +
+                                 stored_type_name(type.get()));
+  }
+  Array<T> array;
+  array.shape = dataset_shape(dataset.get());
+  array.values.resize(static_cast<size_t>(element_count(array.shape)));
+  if (!array.values.empty() && H5Dread(dataset.get(), memory_type(expected), H5S_ALL, H5S_ALL,
+                                       H5P_DEFAULT, array.values.data()) < 0) {
+    throw Error::bad_dataset(file.name(), path, with_hdf5_message("cannot read dataset"));
+  }
+  return array;
+}
+
+template Array<float> read_array<float>(const File&, const std::string&);
+template Array<double> read_array<double>(const File&, const std::string&);
+template Array<int8_t> read_array<int8_t>(const File&, const std::string&);
+template Array<uint8_t> read_array<uint8_t>(const File&, const std::string&);
+template Array<int32_t> read_array<int32_t>(const File&, const std::string&);
+template Array<int64_t> read_array<int64_t>(const File&, const std::string&);
+
+}  // namespace hair::h5

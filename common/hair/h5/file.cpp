@@ -1,0 +1,171 @@
+#include "hair/h5/file.h"
+
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "hair/error.h"
+
+namespace hair::h5 {
+
+namespace {
+
+/// The components of an absolute path: "/a/b" -> {"a", "b"}; "/" -> {}.
+std::vector<std::string> path_components(const std::string& path) {
+  std::vector<std::string> components;
+  size_t begin = 0;
+  while (begin < path.size()) {
+    size_t end = path.find('/', begin);
+    if (end == std::string::npos) end = path.size();
+    if (end > begin) components.push_back(path.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return components;
+}
+
+/// File access properties: closing the file closes every object still open in it.
+Handle strong_close_access() {
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG);
+  return access;
+}
+
+}  // namespace
+
+std::string child_path(const std::string& group_path, const std::string& name) {
+  return (group_path.ends_with('/') ? group_path : group_path + "/") + name;
+}
+
+std::string parent_path(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos || slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+Handle untimed_group_properties() {
+  Handle properties(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+  H5Pset_obj_track_times(properties.get(), false);
+  return properties;
+}
+
+File File::create(const std::filesystem::path& path, std::string display_name) {
+  silence_hdf5_error_printing();
+  if (display_name.empty()) display_name = path.string();
+  const Handle access = strong_close_access();
+  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
+  if (!file.valid()) {
+    throw Error::runtime(display_name, with_hdf5_message("cannot create HDF5 file"));
+  }
+  return File(std::move(file), std::move(display_name), true);
+}
+
+File File::open_read_only(const std::filesystem::path& path, std::string display_name) {
+  silence_hdf5_error_printing();
+  if (display_name.empty()) display_name = path.string();
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) throw Error::bad_input(display_name, "no such file");
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw Error::bad_input(display_name, "not a regular file");
+  }
+  const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
+  if (is_hdf5 == 0) throw Error::bad_input(display_name, "not an HDF5 file");
+  const Handle access = strong_close_access();
+  Handle file(is_hdf5 > 0 ? H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()) : -1, H5Fclose);
+  if (!file.valid()) {
+    throw Error::bad_input(display_name, with_hdf5_message("cannot open HDF5 file"));
+  }
+  return File(std::move(file), std::move(display_name), false);
+}
+
+ObjectKind File::kind_of(const std::string& path) const {
+  std::string prefix;
+  for (const std::string& component : path_components(path)) {
+    prefix += "/" + component;
+    if (H5Lexists(id(), prefix.c_str(), H5P_DEFAULT) <= 0) {
+      H5Eclear2(H5E_DEFAULT);
+      return ObjectKind::missing;
+    }
+  }
+  const Handle object(H5Oopen(id(), prefix.empty() ? "/" : prefix.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!object.valid()) {
+    H5Eclear2(H5E_DEFAULT);
+    return ObjectKind::missing;
+  }
+  switch (H5Iget_type(object.get())) {
+    case H5I_GROUP:
+      return ObjectKind::group;
+    case H5I_DATASET:
+      return ObjectKind::dataset;
+    default:
+      return ObjectKind::other;
+  }
+}
+
+std::vector<std::string> File::member_names(const std::string& path) const {
+  if (kind_of(path) != ObjectKind::group) throw Error::bad_dataset(name_, path, "missing group");
+  const Handle group(H5Gopen2(id(), path.c_str(), H5P_DEFAULT), H5Gclose);
+  std::vector<std::string> names;
+  hsize_t index = 0;
+  H5Literate(
+      group.get(), H5_INDEX_NAME, H5_ITER_INC, &index,
+      [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+        static_cast<std::vector<std::string>*>(data)->push_back(name);
+        return 0;
+      },
+      &names);
+  return names;
+}
+
+void File::create_group(const std::string& path) {
+  const Handle properties = untimed_group_properties();
+  std::string prefix;
+  for (const std::string& component : path_components(path)) {
+    prefix += "/" + component;
+    const ObjectKind kind = kind_of(prefix);
+    if (kind == ObjectKind::group) continue;
+    if (kind != ObjectKind::missing) {
+      throw Error(ErrorKind::runtime, name_, prefix,
+                  "cannot create a group: another object is there");
+    }
+    const Handle group(H5Gcreate2(id(), prefix.c_str(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
+                       H5Gclose);
+    if (!group.valid()) {
+      throw Error(ErrorKind::runtime, name_, prefix, with_hdf5_message("cannot create group"));
+    }
+  }
+}
+
+Handle File::open_dataset(const std::string& path) const {
+  const ObjectKind kind = kind_of(path);
+  if (kind == ObjectKind::missing) throw Error::bad_dataset(name_, path, "missing dataset");
+  if (kind != ObjectKind::dataset) {
+    throw Error::bad_dataset(name_, path,
+                             kind == ObjectKind::group
+                                 ? "expected a dataset, found a group"
+                                 : "expected a dataset, found another object");
+  }
+  Handle dataset(H5Dopen2(id(), path.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid()) {
+    throw Error::bad_dataset(name_, path, with_hdf5_message("cannot open dataset"));
+  }
+  return dataset;
+}
+
+Handle File::open_object(const std::string& path) const {
+  if (kind_of(path) == ObjectKind::missing) throw Error::bad_dataset(name_, path, "missing object");
+  Handle object(H5Oopen(id(), path.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!object.valid()) {
+    throw Error::bad_dataset(name_, path, with_hdf5_message("cannot open object"));
+  }
+  return object;
+}
+
+void File::close() {
+  if (!file_.valid()) return;
+  if (writable_ && H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) {
+    throw Error::runtime(name_, with_hdf5_message("cannot flush HDF5 file"));
+  }
+  if (!file_.close()) throw Error::runtime(name_, with_hdf5_message("cannot close HDF5 file"));
+}
+
+}  // namespace hair::h5

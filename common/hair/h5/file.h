@@ -1,0 +1,86 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hair/h5/handle.h"
+
+namespace hair::h5 {
+
+/// What an absolute path inside a file names.
+enum class ObjectKind { missing, group, dataset, other };
+
+/// An open HDF5 file. Paths inside it are absolute ("/strands/points"); "/" is the root
+/// group. Every failure throws hair::Error naming the file and the object: problems
+/// with a file's content are bad_input, failures to write are runtime errors. HDF5's
+/// own error printing is off.
+class File {
+ public:
+  /// Creates (or truncates) `path` for writing. `display_name` is the name errors use
+  /// (e.g. the final name of an output written under a temporary name); by default the
+  /// path itself.
+  static File create(const std::filesystem::path& path, std::string display_name = {});
+
+  /// Opens an existing HDF5 file read-only. A missing file or one that is not HDF5 is a
+  /// bad_input error.
+  static File open_read_only(const std::filesystem::path& path, std::string display_name = {});
+
+  File(File&& other) noexcept = default;
+  File& operator=(File&& other) noexcept = default;
+  ~File() = default;
+
+  /// The name errors use for this file.
+  const std::string& name() const { return name_; }
+
+  /// The HDF5 file identifier, for the functions of hair/h5 that read and write.
+  hid_t id() const { return file_.get(); }
+
+  bool writable() const { return writable_; }
+
+  /// What `path` names; missing intermediate groups give ObjectKind::missing.
+  ObjectKind kind_of(const std::string& path) const;
+
+  /// True if `path` names a group, dataset or other object.
+  bool exists(const std::string& path) const { return kind_of(path) != ObjectKind::missing; }
+
+  /// Names of the members (groups, datasets, links) of the group `path`, in name order.
+  std::vector<std::string> member_names(const std::string& path) const;
+
+  /// Creates the group `path` and any missing intermediate groups; an existing group is
+  /// kept. A dataset in the way is a runtime error.
+  void create_group(const std::string& path);
+
+  /// Opens the dataset `path`; throws bad_input naming it if it is missing or not a
+  /// dataset.
+  Handle open_dataset(const std::string& path) const;
+
+  /// Opens the group or dataset `path` (to read or write its attributes); throws
+  /// bad_input if it is missing.
+  Handle open_object(const std::string& path) const;
+
+  /// Flushes and closes the file, throwing a runtime error if HDF5 cannot; call before
+  /// committing an output. Further use of the File is an error.
+  void close();
+
+ private:
+  File(Handle file, std::string name, bool writable)
+      : file_(std::move(file)), name_(std::move(name)), writable_(writable) {}
+
+  Handle file_;
+  std::string name_;
+  bool writable_ = false;
+};
+
+/// Group creation properties that leave out modification times, so that equal content
+/// gives byte-identical files. Used for every group and dataset hairstyle creates.
+Handle untimed_group_properties();
+
+/// The path of member `name` of the group `group_path`: ("/a", "b") -> "/a/b", ("/", "b") -> "/b".
+std::string child_path(const std::string& group_path, const std::string& name);
+
+/// The parent group of an absolute path: "/a/b" -> "/a", "/a" -> "/".
+std::string parent_path(const std::string& path);
+
+}  // namespace hair::h5
