@@ -6,6 +6,7 @@
 #include "hair/error.h"
 #include "hair/mesh_checks.h"
 #include "hair/mesh_patches.h"
+#include "hair/point_index.h"
 #include "hair/quad_recovery.h"
 
 namespace hair {
@@ -104,11 +105,13 @@ double rail_length(const Points3f& vertices, const std::vector<int32_t>& rail) {
 
 /// A rail draped over the head (a card from one side over the parting to the other)
 /// has its root inside: its highest point is at least `min_side_share` of its length
-/// from either end and both ends lie lower by `min_side_drop` of their side's length.
+/// from either end, both ends lie lower by `min_side_drop` of their side's length, and
+/// both ends hang off the head (farther than `min_end_distance` from it; a cap's rail
+/// from the hairline over the crown to a band has both ends on the head).
 /// Returns the two halves, both from the highest point down, or nothing.
 std::optional<std::array<std::vector<int32_t>, 2>> part_draped_rail(
     const Points3f& vertices, const std::vector<int32_t>& rail, double min_side_share,
-    double min_side_drop) {
+    double min_side_drop, const TriangleMeshDistance& head_distance, double min_end_distance) {
   size_t top = 0;
   for (size_t i = 1; i < rail.size(); ++i)
     if (vertices(rail[i], 1) > vertices(rail[top], 1)) top = i;
@@ -121,6 +124,8 @@ std::optional<std::array<std::vector<int32_t>, 2>> part_draped_rail(
     double length = rail_length(vertices, *side);
     double drop = vertices(side->front(), 1) - vertices(side->back(), 1);
     if (length < min_side_share * total || drop < min_side_drop * length) return std::nullopt;
+    if (head_distance.distance(vertices.row(side->back()).cast<double>().transpose()) < min_end_distance)
+      return std::nullopt;
   }
   return std::array<std::vector<int32_t>, 2>{before, after};
 }
@@ -185,6 +190,62 @@ MeshConventions mesh_conventions(std::vector<RegionRails>& regions,
     if (*share <= 1 - params.convention_min_agreement) conventions.uv_growth_sign = -1;
   }
   return conventions;
+}
+
+/// Decides regions that the first pass left open from their neighbours: where the
+/// confidently oriented strands of other patches start near a rail's last point (or
+/// end near its first), the rail runs on into them; the reverse votes for reversing.
+/// A region is decided when at least half of its rails have a neighbour and three
+/// quarters of the votes agree.
+void decide_by_continuation(const Points3f& vertices, std::vector<RegionRails>& regions,
+                            float radius) {
+  std::vector<Eigen::Vector3f> roots, tips;
+  std::vector<int32_t> root_patch, tip_patch;
+  auto add_ends = [&](const std::vector<int32_t>& rail, bool reverse, int32_t patch) {
+    roots.push_back(vertices.row(reverse ? rail.back() : rail.front()).transpose());
+    tips.push_back(vertices.row(reverse ? rail.front() : rail.back()).transpose());
+    root_patch.push_back(patch);
+    tip_patch.push_back(patch);
+  };
+  for (const RegionRails& region : regions) {
+    for (const auto& rail : region.parted_rails) add_ends(rail, false, region.patch);
+    if (region.decision)
+      for (const auto& rail : region.open_rails) add_ends(rail, region.decision->reverse, region.patch);
+  }
+  if (roots.empty()) return;
+  auto as_points = [](const std::vector<Eigen::Vector3f>& list) {
+    Points3f points(static_cast<Eigen::Index>(list.size()), 3);
+    for (size_t i = 0; i < list.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = list[i].transpose();
+    return points;
+  };
+  PointIndex root_index(as_points(roots)), tip_index(as_points(tips));
+  auto near_other = [&](const PointIndex& index, const std::vector<int32_t>& patch_of,
+                        const Eigen::Vector3f& point, int32_t patch) {
+    for (int32_t id : index.within(point, radius))
+      if (patch_of[id] != patch) return true;
+    return false;
+  };
+  for (RegionRails& region : regions) {
+    if (region.decision || region.open_rails.empty()) continue;
+    double forward = 0, backward = 0, rails_with_neighbour = 0;
+    for (const auto& rail : region.open_rails) {
+      Eigen::Vector3f first = vertices.row(rail.front()).transpose();
+      Eigen::Vector3f last = vertices.row(rail.back()).transpose();
+      bool runs_on = near_other(root_index, root_patch, last, region.patch) ||
+                     near_other(tip_index, tip_patch, first, region.patch);
+      bool runs_back = near_other(root_index, root_patch, first, region.patch) ||
+                       near_other(tip_index, tip_patch, last, region.patch);
+      forward += runs_on && !runs_back ? 1 : 0;
+      backward += runs_back && !runs_on ? 1 : 0;
+      rails_with_neighbour += runs_on || runs_back ? 1 : 0;
+    }
+    double votes = forward + backward;
+    if (rails_with_neighbour < 0.5 * static_cast<double>(region.open_rails.size()) || votes == 0 ||
+        std::abs(forward - backward) < 0.5 * votes)
+      continue;
+    region.decision = OrientationDecision{backward > forward, OrientationRule::continuation,
+                                          static_cast<float>(std::abs(forward - backward) / votes)};
+  }
 }
 
 /// Marks body triangles above the neck lying within `max_distance` of the hair mesh.
@@ -264,12 +325,18 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
       RegionRails region;
       region.patch = p;
       region.region_in_patch = r;
-      for (const auto& chain : topologies[p].regions[r].families[along[p][r]].chains) {
-        if (chain.size() > 2 && chain.front() == chain.back()) {
+      const EdgeFamily& along_family = topologies[p].regions[r].families[along[p][r]];
+      double longest = 0;
+      for (const auto& chain : along_family.chains) longest = std::max(longest, rail_length(vertices, chain));
+      for (const auto& chain : along_family.chains) {
+        if (rail_length(vertices, chain) < params.min_rail_length_share * longest) {
+          ++result.stats.fragments_dropped;
+        } else if (chain.size() > 2 && chain.front() == chain.back()) {
           for (auto& half : part_closed_rail(vertices, chain)) region.parted_rails.push_back(half);
           ++result.stats.rails_parted;
-        } else if (auto halves = part_draped_rail(vertices, chain, params.parting_min_side_share,
-                                                  params.parting_min_side_drop)) {
+        } else if (auto halves = part_draped_rail(
+                       vertices, chain, params.parting_min_side_share, params.parting_min_side_drop,
+                       head_distance, params.parting_min_end_distance_h * result.head.head_height)) {
           for (auto& half : *halves) region.parted_rails.push_back(half);
           ++result.stats.rails_parted;
         } else {
@@ -295,6 +362,8 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   MeshConventions conventions = mesh_conventions(regions, thresholds, params);
   result.stats.vertex_order_trusted = conventions.trust_vertex_order;
   result.stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
+  decide_by_continuation(vertices, regions,
+                         static_cast<float>(params.continuation_radius_h * result.head.head_height));
   for (RegionRails& region : regions)
     if (!region.decision) region.decision = decide_orientation(region.evidence, thresholds, conventions);
 

@@ -38,6 +38,14 @@ struct ExtractParams {
   double parting_min_side_share = 0.25;
   /// ...and each side's end lies lower than the top by this share of the side's length.
   double parting_min_side_drop = 0.25;
+  /// ...and both ends hang off the head by more than this fraction of H.
+  double parting_min_end_distance_h = 0.1;
+  /// Along-chains shorter than this share of their region's longest are fragments
+  /// (colouring conflicts around poles) and are dropped.
+  double min_rail_length_share = 0.25;
+  /// Continuation: confident strands of other patches starting (or ending) within this
+  /// distance, as a fraction of H, of a rail's end tell that end is distal (proximal).
+  double continuation_radius_h = 0.08;
   /// Body triangles above the neck within this distance of the hair mesh, as a
   /// fraction of H, form the scalp.
   double scalp_distance_h = 0.06;
@@ -52,8 +60,9 @@ struct ExtractStats {
   int64_t triangles_paired = 0;
   int64_t triangles_left = 0;
   int64_t rails_parted = 0;  ///< closed or draped rails cut in two at their top
+  int64_t fragments_dropped = 0;  ///< along-chains too short to be rails
   int64_t family_conflicts = 0;
-  std::array<int64_t, 5> groups_by_rule{};  ///< indexed by OrientationRule
+  std::array<int64_t, 6> groups_by_rule{};  ///< indexed by OrientationRule
   std::array<int64_t, 5> groups_by_kind{};  ///< indexed by PatchKind
   bool vertex_order_trusted = true;
   int uv_growth_sign = 0;  ///< the mesh's texture convention: +1, -1, or 0 for none

@@ -9,9 +9,10 @@ namespace hair {
 enum class OrientationRule : int8_t {
   vertex_order = 0,    ///< vertex ids grow from root to tip (the paper's assumption, sec. 3)
   scalp_distance = 1,  ///< the end nearer the head surface is the root
-  uv = 2,              ///< the texture's v runs root to tip as on the mesh's other patches
-  height = 3,          ///< the higher end is the root (hair falls)
-  parting = 4,         ///< rails draped over the head or looped: the top is the root
+  continuation = 2,    ///< other patches' strands start where these end (or end where these start)
+  uv = 3,              ///< the texture's v runs root to tip as on the mesh's other patches
+  height = 4,          ///< the higher end is the root (hair falls)
+  parting = 5,         ///< rails draped over the head or looped: the top is the root
 };
 
 /// What a region of rails (consistently oriented chains of one patch) says about its
@@ -54,9 +55,10 @@ struct OrientationDecision {
 ///  1. ordered rails that agree decide (vertex_order), unless the head distance decides
 ///     the other way, or the mesh's ids are not to be trusted;
 ///  2. else a decisive head-distance slope decides (scalp_distance);
-///  3. else the texture's v growth, if the mesh has a consistent convention (uv);
-///  4. else the higher end is the root (height).
-/// Without `conventions` (the first pass, which learns them) steps 3 and 4 return
+///  3. (continuation is decided between passes, from the neighbours: see extract.cpp)
+///  4. else the texture's v growth, if the mesh has a consistent convention (uv);
+///  5. else the higher end is the root (height).
+/// Without `conventions` (the first pass, which learns them) steps 4 and 5 return
 /// nullopt.
 std::optional<OrientationDecision> decide_orientation(
     const OrientationEvidence& evidence, const OrientationThresholds& thresholds,
