@@ -1,5 +1,6 @@
 #include "hair/atomic_file.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <string>
@@ -24,8 +25,8 @@ AtomicFile::AtomicFile(std::filesystem::path final_path) : final_path_(std::move
   if (std::filesystem::is_directory(final_path_, error)) {
     throw Error::usage("output path " + final_path_.string() + " is a directory");
   }
-  temporary_path_ = directory / ("." + final_path_.filename().string() + ".tmp." +
-                                 std::to_string(static_cast<long long>(::getpid())));
+  temporary_path_ = directory / fmt::format(".{}.tmp.{}", final_path_.filename().string(),
+                                            static_cast<long long>(::getpid()));
 }
 
 AtomicFile::~AtomicFile() {

@@ -1,5 +1,7 @@
 #include "hair/h5/attribute.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 
@@ -241,7 +243,7 @@ std::string attribute_text(const File& file, const std::string& object_path,
     default:
       break;
   }
-  return "<" + attribute_type_name(file, object_path, name) + ">";
+  return fmt::format("<{}>", attribute_type_name(file, object_path, name));
 }
 
 }  // namespace hair::h5
