@@ -12,24 +12,22 @@ namespace hair::h5 {
 
 namespace {
 
-NumericSummary numeric_summary(const File& file, const std::string& path) {
+/// Fills the summary of a numeric dataset of extents `shape`, and its column summaries
+/// if it is a narrow 2-D dataset.
+void summarise_numbers(const File& file, const std::string& path, const Shape& shape,
+                       TreeEntry& entry) {
   NumericSummary summary;
-  summary.min = std::numeric_limits<double>::infinity();
-  summary.max = -std::numeric_limits<double>::infinity();
-  for_each_block<double>(file, path, [&](int64_t, std::span<const double> values) {
-    for (const double value : values) {
-      if (!std::isfinite(value)) {
-        ++summary.non_finite;
-        continue;
-      }
-      ++summary.finite;
-      summary.min = std::min(summary.min, value);
-      summary.max = std::max(summary.max, value);
+  const bool by_column = shape.size() == 2 && shape[1] > 0 && shape[1] <= kMaxSummaryColumns;
+  std::vector<NumericSummary> columns(by_column ? static_cast<size_t>(shape[1]) : 0);
+  for_each_block<double>(file, path, [&](int64_t first, std::span<const double> values) {
+    for (size_t offset = 0; offset < values.size(); ++offset) {
+      summary.add(values[offset]);
+      if (by_column) columns[(first + offset) % columns.size()].add(values[offset]);
     }
     return true;
   });
-  if (summary.finite == 0) summary.min = summary.max = 0;
-  return summary;
+  entry.summary = summary;
+  entry.column_summaries = std::move(columns);
 }
 
 std::vector<std::pair<std::string, int64_t>> enum_counts(const File& file,
@@ -62,7 +60,7 @@ void list_object(const File& file, const std::string& path, bool with_summaries,
     } else if (with_summaries && (entry.dataset.type_name.starts_with("int") ||
                                   entry.dataset.type_name.starts_with("uint") ||
                                   entry.dataset.type_name.starts_with("float"))) {
-      entry.summary = numeric_summary(file, path);
+      summarise_numbers(file, path, entry.dataset.shape, entry);
     }
   }
   entries.push_back(std::move(entry));
@@ -73,6 +71,16 @@ void list_object(const File& file, const std::string& path, bool with_summaries,
 }
 
 }  // namespace
+
+void NumericSummary::add(double value) {
+  if (!std::isfinite(value)) {
+    ++non_finite;
+    return;
+  }
+  ++finite;
+  min = std::min(min, value);
+  max = std::max(max, value);
+}
 
 std::vector<TreeEntry> list_tree(const File& file, bool with_summaries) {
   std::vector<TreeEntry> entries;

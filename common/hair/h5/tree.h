@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -18,13 +19,19 @@ struct AttributeEntry {
   std::string text;       ///< the value as text (attribute_text())
 };
 
-/// Range of a numeric dataset's values.
+/// Range of numeric values.
 struct NumericSummary {
-  double min = 0;          ///< smallest finite value (0 if there is none)
-  double max = 0;          ///< largest finite value (0 if there is none)
-  int64_t finite = 0;      ///< number of finite values
-  int64_t non_finite = 0;  ///< number of NaN and infinite values
+  double min = std::numeric_limits<double>::infinity();   ///< smallest finite value
+  double max = -std::numeric_limits<double>::infinity();  ///< largest finite value
+  int64_t finite = 0;                                     ///< number of finite values
+  int64_t non_finite = 0;                                 ///< number of NaN and infinite values
+
+  /// Counts `value` and widens the range if it is finite.
+  void add(double value);
 };
+
+/// Widest 2-D numeric dataset whose columns get their own range (x, y, z of points).
+inline constexpr int64_t kMaxSummaryColumns = 4;
 
 /// One group or dataset of a file.
 struct TreeEntry {
@@ -33,6 +40,8 @@ struct TreeEntry {
   DatasetInfo dataset;                     ///< datasets only
   std::vector<AttributeEntry> attributes;  ///< in name order
   std::optional<NumericSummary> summary;   ///< numeric datasets, when summaries are asked for
+  /// With `summary`, for 2-D datasets of at most kMaxSummaryColumns columns: one per column.
+  std::vector<NumericSummary> column_summaries;
   /// Enum datasets, when summaries are asked for: each member name with its count of
   /// values, in value order.
   std::vector<std::pair<std::string, int64_t>> enum_counts;

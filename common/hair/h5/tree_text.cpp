@@ -15,19 +15,27 @@ std::string storage_text(const DatasetInfo& info) {
   return text;
 }
 
+/// "[-1, 2]", or "[]" without finite values.
+std::string range_text(const NumericSummary& summary) {
+  if (summary.finite == 0) return "[]";
+  return fmt::format("[{:.6g}, {:.6g}]", summary.min, summary.max);
+}
+
 std::string summary_text(const TreeEntry& entry) {
+  std::string text;
   if (entry.summary) {
-    const NumericSummary& summary = *entry.summary;
-    std::string text;
-    if (summary.finite > 0) text = fmt::format("range [{:.6g}, {:.6g}]", summary.min, summary.max);
-    if (summary.non_finite > 0) {
-      text += (text.empty() ? "" : ", ") + fmt::format("{} non-finite", summary.non_finite);
+    if (entry.summary->finite > 0) text = "range " + range_text(*entry.summary);
+    if (!entry.column_summaries.empty() && entry.summary->finite > 0) {
+      text += "  by column";
+      for (const NumericSummary& column : entry.column_summaries) text += " " + range_text(column);
+    }
+    if (entry.summary->non_finite > 0) {
+      text += fmt::format("{}{} non-finite", text.empty() ? "" : ", ", entry.summary->non_finite);
     }
     return text;
   }
-  std::string text;
   for (const auto& [name, count] : entry.enum_counts) {
-    text += (text.empty() ? "" : ", ") + fmt::format("{} {}", name, count);
+    text += fmt::format("{}{} {}", text.empty() ? "" : ", ", name, count);
   }
   return text;
 }
