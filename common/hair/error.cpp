@@ -7,11 +7,13 @@ namespace hair {
 
 std::string error_line(const std::string& file, const std::string& dataset,
                        const std::string& reason) {
-  std::string line;
-  if (!file.empty()) line += file;
-  if (!dataset.empty()) line += (line.empty() ? "" : ":") + dataset;
-  if (!line.empty()) line += ": ";
-  line += reason;
+  std::string line = file;
+  if (!dataset.empty()) {
+    if (!line.empty()) line.push_back(':');
+    line.append(dataset);
+  }
+  if (!line.empty()) line.append(": ");
+  line.append(reason);
   std::replace(line.begin(), line.end(), '\n', ' ');
   std::replace(line.begin(), line.end(), '\r', ' ');
   return line;

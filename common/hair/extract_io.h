@@ -1,0 +1,15 @@
+#pragma once
+
+#include "hair/extract.h"
+#include "hair/h5/file.h"
+
+namespace hair {
+
+/// Schema name of the extract stage's output (schemas/extract.json).
+inline constexpr const char* kExtractSchema = "hairstyle.extract";
+
+/// Writes everything of `result` that extract.h5 holds (schemas/extract.json), with
+/// the schema attributes and the unit conventions; provenance is the caller's.
+void write_extract_file(h5::File& file, const ExtractResult& result, const ExtractParams& params);
+
+}  // namespace hair
