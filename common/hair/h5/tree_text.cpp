@@ -24,10 +24,12 @@ std::string range_text(const NumericSummary& summary) {
 std::string summary_text(const TreeEntry& entry) {
   std::string text;
   if (entry.summary) {
-    if (entry.summary->finite > 0) text = "range " + range_text(*entry.summary);
+    if (entry.summary->finite > 0) text = fmt::format("range {}", range_text(*entry.summary));
     if (!entry.column_summaries.empty() && entry.summary->finite > 0) {
       text += "  by column";
-      for (const NumericSummary& column : entry.column_summaries) text += " " + range_text(column);
+      for (const NumericSummary& column : entry.column_summaries) {
+        text += fmt::format(" {}", range_text(column));
+      }
     }
     if (entry.summary->non_finite > 0) {
       text += fmt::format("{}{} non-finite", text.empty() ? "" : ", ", entry.summary->non_finite);
