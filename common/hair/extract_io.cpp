@@ -8,7 +8,6 @@
 #include "hair/h5/strand_set_io.h"
 
 namespace hair {
-namespace {
 
 const h5::EnumMembers& patch_kind_members() {
   static const h5::EnumMembers members = {
@@ -22,6 +21,8 @@ const h5::EnumMembers& orientation_rule_members() {
                                           {"height", 4},       {"parting", 5}};
   return members;
 }
+
+namespace {
 
 template <class Enum>
 std::vector<int8_t> enum_values(const std::vector<Enum>& values) {

@@ -1,12 +1,17 @@
 #pragma once
 
 #include "hair/extract.h"
+#include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
 
 namespace hair {
 
 /// Schema name of the extract stage's output (schemas/extract.json).
 inline constexpr const char* kExtractSchema = "hairstyle.extract";
+
+/// Members of the enum datasets /groups/patch_kind and /groups/orientation_rule.
+const h5::EnumMembers& patch_kind_members();
+const h5::EnumMembers& orientation_rule_members();
 
 /// Writes everything of `result` that extract.h5 holds (schemas/extract.json), with
 /// the schema attributes and the unit conventions; provenance is the caller's.

@@ -105,7 +105,10 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
     Projection projection = framing(frame_points, options.views[view_index], options);
     cv::Mat view = canvas(cv::Rect(static_cast<int>(view_index) * size, 0, size, size));
     cv::Mat depth(size, size, CV_64F, cv::Scalar(-std::numeric_limits<double>::infinity()));
-    if (body_triangles.rows() > 0) draw_body(body_vertices, body_triangles, projection, view, depth);
+    if (body_triangles.rows() > 0) {
+      cv::Mat body_image = options.draw_body ? view : view.clone();
+      draw_body(body_vertices, body_triangles, projection, body_image, depth);
+    }
 
     // Strand segments far to near, each drawn unless the body is in front of it.
     std::vector<std::pair<double, int64_t>> segments;

@@ -20,6 +20,7 @@ struct RenderOptions {
   double margin = 0.08;          ///< empty border, as a share of the view
   double line_width_px = 1.0;
   bool frame_on_strands = true;  ///< frame the views on the strands (else on the body)
+  bool draw_body = true;         ///< draw the body (it still hides the strands behind it)
   std::string title;             ///< drawn at the top left, may be empty
 };
 

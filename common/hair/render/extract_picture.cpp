@@ -1,0 +1,82 @@
+#include "hair/render/extract_picture.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include "hair/error.h"
+#include "hair/extract_io.h"
+#include "hair/h5/dataset.h"
+#include "hair/h5/schema_validation.h"
+#include "hair/h5/strand_set_io.h"
+
+namespace hair {
+namespace {
+
+/// Distinct colours (BGR) for categories, in the order of their enum values.
+const std::vector<cv::Vec3b>& category_colours() {
+  static const std::vector<cv::Vec3b> colours = {
+      {180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214}, {189, 103, 148}, {75, 86, 140}};
+  return colours;
+}
+
+void draw_legend(cv::Mat& image, const h5::EnumMembers& members) {
+  int y = 44;
+  for (const h5::EnumMember& member : members) {
+    cv::Vec3b c = category_colours()[static_cast<size_t>(member.value) % category_colours().size()];
+    cv::rectangle(image, cv::Rect(10, y - 10, 14, 10), cv::Scalar(c[0], c[1], c[2]), cv::FILLED);
+    cv::putText(image, member.name, cv::Point(30, y), cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+    y += 18;
+  }
+}
+
+/// Spreads a per-group enum to the strands.
+std::vector<int32_t> per_strand(const std::vector<int8_t>& per_group,
+                                const std::vector<int32_t>& strand_group) {
+  std::vector<int32_t> values;
+  values.reserve(strand_group.size());
+  for (int32_t group : strand_group) values.push_back(per_group[group]);
+  return values;
+}
+
+}  // namespace
+
+ExtractColouring parse_extract_colouring(const std::string& word) {
+  if (word == "group") return ExtractColouring::group;
+  if (word == "direction") return ExtractColouring::direction;
+  if (word == "rule") return ExtractColouring::rule;
+  if (word == "kind") return ExtractColouring::kind;
+  throw Error::usage("colouring '" + word + "' is not one of: group, direction, rule, kind");
+}
+
+cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
+                        const RenderOptions& options) {
+  h5::require_schema(file, kExtractSchema);
+  StrandSet strands = h5::read_strand_set(file, "/strands");
+  const auto& strand_group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
+  Points3f body_vertices = h5::read_matrix<float, 3>(file, "/body/vertices");
+  Triangles3i body_triangles = h5::read_matrix<int32_t, 3>(file, "/body/triangles");
+
+  PointColours colours;
+  const h5::EnumMembers* legend = nullptr;
+  switch (colouring) {
+    case ExtractColouring::group: colours = colours_by_id(strands, strand_group); break;
+    case ExtractColouring::direction: colours = colours_root_to_tip(strands); break;
+    case ExtractColouring::rule:
+      legend = &orientation_rule_members();
+      colours = colours_by_table(
+          strands, per_strand(h5::read_enum_dataset(file, "/groups/orientation_rule", *legend), strand_group),
+          category_colours());
+      break;
+    case ExtractColouring::kind:
+      legend = &patch_kind_members();
+      colours = colours_by_table(
+          strands, per_strand(h5::read_enum_dataset(file, "/groups/patch_kind", *legend), strand_group),
+          category_colours());
+      break;
+  }
+  cv::Mat image = render_strands(strands, colours, body_vertices, body_triangles, options);
+  if (legend) draw_legend(image, *legend);
+  return image;
+}
+
+}  // namespace hair

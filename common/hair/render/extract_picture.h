@@ -1,0 +1,26 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "hair/h5/file.h"
+#include "hair/render/strand_render.h"
+
+namespace hair {
+
+/// What colours the strands of an extract picture.
+enum class ExtractColouring {
+  group,      ///< a hue per strand group (patch)
+  direction,  ///< root (dark blue) to tip (yellow): shows the orientation
+  rule,       ///< the rule that decided the orientation (with a legend)
+  kind,       ///< the patch kind (with a legend)
+};
+
+/// Parses "group", "direction", "rule" or "kind"; a usage error otherwise.
+ExtractColouring parse_extract_colouring(const std::string& word);
+
+/// Renders the input strands of an extract.h5 file over its body.
+cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
+                        const RenderOptions& options);
+
+}  // namespace hair
