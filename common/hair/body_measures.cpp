@@ -21,24 +21,29 @@ HeadMeasures head_measures(const PolyMesh& body, const std::string& file) {
   constexpr double infinity = std::numeric_limits<double>::infinity();
   std::vector<Eigen::Vector2d> low(slice_count, Eigen::Vector2d::Constant(infinity));
   std::vector<Eigen::Vector2d> high(slice_count, Eigen::Vector2d::Constant(-infinity));
-  for (Eigen::Index v = 0; v < body.vertices.rows(); ++v) {
-    int slice = std::min(slice_count - 1, static_cast<int>((top - body.vertices(v, 1)) / thickness));
-    Eigen::Vector2d xz(body.vertices(v, 0), body.vertices(v, 2));
-    low[slice] = low[slice].cwiseMin(xz);
-    high[slice] = high[slice].cwiseMax(xz);
-  }
-  // A slice's width spans its vertices and its two neighbours', so that thin slices
-  // holding a few vertices do not read as narrow.
-  std::vector<double> width(slice_count, -1);  // -1: empty
-  for (int s = 0; s < slice_count; ++s) {
-    Eigen::Vector2d lowest = low[s], highest = high[s];
-    for (int n : {s - 1, s + 1})
-      if (n >= 0 && n < slice_count) {
-        lowest = lowest.cwiseMin(low[n]);
-        highest = highest.cwiseMax(high[n]);
+  // Cross-sections of the surface: every edge adds its crossing of each slice's centre
+  // plane, so the width does not depend on how densely the mesh is sampled.
+  auto slice_centre = [&](int slice) { return top - (slice + 0.5) * thickness; };
+  for (int64_t f = 0; f < body.face_count(); ++f) {
+    auto face = body.face(f);
+    for (size_t c = 0; c < face.size(); ++c) {
+      Eigen::Vector3d a = body.vertices.row(face[c]).cast<double>().transpose();
+      Eigen::Vector3d b = body.vertices.row(face[(c + 1) % face.size()]).cast<double>().transpose();
+      if (a.y() < b.y()) std::swap(a, b);  // a above b
+      int first = std::max(0, static_cast<int>(std::ceil((top - a.y()) / thickness - 0.5)));
+      int last = std::min(slice_count - 1, static_cast<int>(std::floor((top - b.y()) / thickness - 0.5)));
+      for (int slice = first; slice <= last; ++slice) {
+        double t = a.y() > b.y() ? (a.y() - slice_centre(slice)) / (a.y() - b.y()) : 0.0;
+        Eigen::Vector3d p = a + t * (b - a);
+        Eigen::Vector2d xz(p.x(), p.z());
+        low[slice] = low[slice].cwiseMin(xz);
+        high[slice] = high[slice].cwiseMax(xz);
       }
-    if (high[s].x() >= low[s].x()) width[s] = (highest - lowest).maxCoeff();
+    }
   }
+  std::vector<double> width(slice_count, -1);  // -1: the surface does not reach the slice
+  for (int s = 0; s < slice_count; ++s)
+    if (high[s].x() >= low[s].x()) width[s] = (high[s] - low[s]).maxCoeff();
 
   HeadMeasures measures;
   measures.head_top_y = top;

@@ -15,16 +15,16 @@ struct HeadMeasures {
 
 /// Measures the head of an upright body mesh (+Y up).
 ///
-/// The body's vertices are cut into horizontal slices 1/300 of the body's height
-/// thick; a slice's width is the larger of the x and z extents of its vertices and
-/// those of its two neighbours. Walking down from the
+/// The body is cut by 300 horizontal planes spread over its height; a slice's width is
+/// the larger of the x and z extents of the surface's cross-section there (every edge
+/// crossing the plane). Walking down from the
 /// crown, the width grows to the head's widest, narrows at the neck (to at most 0.7
 /// of the widest) and jumps at the shoulders (over 1.6 times the widest); the neck is
 /// the narrowest slice between the two, or the narrowest below the head for a mesh
 /// without shoulders. H is the height from the neck to the crown: it is the
 /// "head height" of the paper's eq. (1), measured where a mesh defines it well (the
 /// chin is hard to find on a mesh; the neck's waist is not). On the MakeHuman body
-/// it is about 0.25 m.
+/// it is 0.242 m.
 ///
 /// Throws hair::Error (bad_input) naming `file` for a mesh with no height.
 HeadMeasures head_measures(const PolyMesh& body, const std::string& file);

@@ -192,60 +192,101 @@ MeshConventions mesh_conventions(std::vector<RegionRails>& regions,
   return conventions;
 }
 
-/// Decides regions that the first pass left open from their neighbours: where the
-/// confidently oriented strands of other patches start near a rail's last point (or
-/// end near its first), the rail runs on into them; the reverse votes for reversing.
+/// The end of an oriented strand of a decided patch, and the hair's flow there.
+struct StrandEnd {
+  bool is_root = false;
+  Eigen::Vector3f flow;  ///< unit direction root to tip at this end
+  int32_t patch = 0;
+};
+
+/// Unit direction of the rail's first (or last) segment, from its first to its last point.
+Eigen::Vector3f end_direction(const Points3f& vertices, const std::vector<int32_t>& rail, bool at_last) {
+  Eigen::Vector3f d = at_last ? Eigen::Vector3f(vertices.row(rail[rail.size() - 1]) - vertices.row(rail[rail.size() - 2]))
+                              : Eigen::Vector3f(vertices.row(rail[1]) - vertices.row(rail[0]));
+  float norm = d.norm();
+  return norm > 0 ? Eigen::Vector3f(d / norm) : Eigen::Vector3f::Zero();
+}
+
+/// One round of continuation: decides regions left open from the oriented strands of
+/// other patches (decided regions, parted rails) whose ends lie within `radius` of a
+/// rail's ends. The nearest such end E' at a rail end E, with the rail's outward
+/// direction u at E (pointing out of the rail) and the hair's flow f at E', says:
+///  - E' a root: other hair starts where the rail ends, E is the rail's tip, at any
+///    angle (a tail leaves a ponytail's band downwards while cap strands arrive there
+///    from all sides);
+///  - E' a tip: if the rail carries that flow on (-u . f > cos 60 deg), E is the rail's
+///    root (continuation); otherwise both arrive at one place and E is a tip too
+///    (convergence, as cap strands meet at the band).
 /// A region is decided when at least half of its rails have a neighbour and three
-/// quarters of the votes agree.
-void decide_by_continuation(const Points3f& vertices, std::vector<RegionRails>& regions,
-                            float radius) {
-  std::vector<Eigen::Vector3f> roots, tips;
-  std::vector<int32_t> root_patch, tip_patch;
-  auto add_ends = [&](const std::vector<int32_t>& rail, bool reverse, int32_t patch) {
-    roots.push_back(vertices.row(reverse ? rail.back() : rail.front()).transpose());
-    tips.push_back(vertices.row(reverse ? rail.front() : rail.back()).transpose());
-    root_patch.push_back(patch);
-    tip_patch.push_back(patch);
+/// quarters of their votes agree. Returns how many regions it decided.
+int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRails>& regions,
+                                float radius) {
+  constexpr float aligned = 0.5f;  // cos 60 degrees
+  std::vector<StrandEnd> ends;
+  std::vector<Eigen::Vector3f> positions;
+  auto add_ends = [&](std::vector<int32_t> rail, bool reverse, int32_t patch) {
+    if (reverse) std::reverse(rail.begin(), rail.end());
+    positions.push_back(vertices.row(rail.front()).transpose());
+    ends.push_back({true, end_direction(vertices, rail, false), patch});
+    positions.push_back(vertices.row(rail.back()).transpose());
+    ends.push_back({false, end_direction(vertices, rail, true), patch});
   };
   for (const RegionRails& region : regions) {
     for (const auto& rail : region.parted_rails) add_ends(rail, false, region.patch);
     if (region.decision)
       for (const auto& rail : region.open_rails) add_ends(rail, region.decision->reverse, region.patch);
   }
-  if (roots.empty()) return;
-  auto as_points = [](const std::vector<Eigen::Vector3f>& list) {
-    Points3f points(static_cast<Eigen::Index>(list.size()), 3);
-    for (size_t i = 0; i < list.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = list[i].transpose();
-    return points;
+  if (ends.empty()) return 0;
+  Points3f end_points(static_cast<Eigen::Index>(positions.size()), 3);
+  for (size_t i = 0; i < positions.size(); ++i) end_points.row(static_cast<Eigen::Index>(i)) = positions[i].transpose();
+  PointIndex index(end_points);
+
+  // +1: this end of the rail is its root; -1: its tip; 0: no neighbour.
+  auto end_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch) {
+    for (int32_t id : index.within(point, radius)) {  // nearest first
+      const StrandEnd& other = ends[id];
+      if (other.patch == patch) continue;
+      if (other.is_root) return -1;
+      return -outward.dot(other.flow) > aligned ? 1 : -1;
+    }
+    return 0;
   };
-  PointIndex root_index(as_points(roots)), tip_index(as_points(tips));
-  auto near_other = [&](const PointIndex& index, const std::vector<int32_t>& patch_of,
-                        const Eigen::Vector3f& point, int32_t patch) {
-    for (int32_t id : index.within(point, radius))
-      if (patch_of[id] != patch) return true;
-    return false;
-  };
-  for (RegionRails& region : regions) {
+
+  std::vector<std::optional<OrientationDecision>> decided(regions.size());
+  for (size_t r = 0; r < regions.size(); ++r) {
+    const RegionRails& region = regions[r];
     if (region.decision || region.open_rails.empty()) continue;
     double forward = 0, backward = 0, rails_with_neighbour = 0;
     for (const auto& rail : region.open_rails) {
-      Eigen::Vector3f first = vertices.row(rail.front()).transpose();
-      Eigen::Vector3f last = vertices.row(rail.back()).transpose();
-      bool runs_on = near_other(root_index, root_patch, last, region.patch) ||
-                     near_other(tip_index, tip_patch, first, region.patch);
-      bool runs_back = near_other(root_index, root_patch, first, region.patch) ||
-                       near_other(tip_index, tip_patch, last, region.patch);
-      forward += runs_on && !runs_back ? 1 : 0;
-      backward += runs_back && !runs_on ? 1 : 0;
-      rails_with_neighbour += runs_on || runs_back ? 1 : 0;
+      int first_is_root = end_vote(vertices.row(rail.front()).transpose(), -end_direction(vertices, rail, false), region.patch);
+      int last_is_root = end_vote(vertices.row(rail.back()).transpose(), end_direction(vertices, rail, true), region.patch);
+      int score = first_is_root - last_is_root;  // > 0: the rail runs as it is
+      forward += score > 0 ? 1 : 0;
+      backward += score < 0 ? 1 : 0;
+      rails_with_neighbour += first_is_root != 0 || last_is_root != 0 ? 1 : 0;
     }
     double votes = forward + backward;
     if (rails_with_neighbour < 0.5 * static_cast<double>(region.open_rails.size()) || votes == 0 ||
         std::abs(forward - backward) < 0.5 * votes)
       continue;
-    region.decision = OrientationDecision{backward > forward, OrientationRule::continuation,
-                                          static_cast<float>(std::abs(forward - backward) / votes)};
+    decided[r] = OrientationDecision{backward > forward, OrientationRule::continuation,
+                                     static_cast<float>(std::abs(forward - backward) / votes)};
   }
+  int count = 0;
+  for (size_t r = 0; r < regions.size(); ++r)  // applied together: order does not matter
+    if (decided[r]) {
+      regions[r].decision = decided[r];
+      ++count;
+    }
+  return count;
+}
+
+/// Continuation in rounds, so that a decision travels along chains of patches (a cap
+/// made of several patches meeting the tail at one of them), at most `max_rounds`.
+void decide_by_continuation(const Points3f& vertices, std::vector<RegionRails>& regions,
+                            float radius, int max_rounds = 16) {
+  for (int round = 0; round < max_rounds; ++round)
+    if (decide_by_continuation_once(vertices, regions, radius) == 0) return;
 }
 
 /// Marks body triangles above the neck lying within `max_distance` of the hair mesh.

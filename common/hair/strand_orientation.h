@@ -26,7 +26,7 @@ struct OrientationEvidence {
   double scalp_distance_slope = 0;
   /// Mean signed growth of texture v along the rails, per unit of texture motion, in
   /// [-1, 1]; nullopt without texture coordinates.
-  std::optional<double> uv_growth;
+  std::optional<double> uv_growth = std::nullopt;
   /// sum over rails of (height of the first point - height of the last) / sum of lengths.
   double height_slope = 0;
 };

@@ -24,6 +24,7 @@ struct TriangleMeshDistance::Index {
   Centroids centroids;
   std::unique_ptr<Tree> tree;
   size_t candidate_count = 16;
+  double largest_radius = 0;  ///< largest centroid-to-corner distance of a triangle
 };
 
 TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles,
@@ -35,8 +36,11 @@ TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Trian
   for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
     std::array<Eigen::Vector3d, 3> corner;
     for (int k = 0; k < 3; ++k) corner[k] = vertices.row(triangles(t, k)).cast<double>().transpose();
+    Eigen::Vector3d centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
+    for (const Eigen::Vector3d& c : corner)
+      index_->largest_radius = std::max(index_->largest_radius, (c - centroid).norm());
     index_->corners.push_back(corner);
-    index_->centroids.points.push_back((corner[0] + corner[1] + corner[2]) / 3.0);
+    index_->centroids.points.push_back(centroid);
   }
   index_->tree = std::make_unique<Index::Tree>(3, index_->centroids,
                                                nanoflann::KDTreeSingleIndexAdaptorParams(10));
@@ -48,21 +52,28 @@ TriangleMeshDistance::TriangleMeshDistance(TriangleMeshDistance&&) noexcept = de
 TriangleMeshDistance& TriangleMeshDistance::operator=(TriangleMeshDistance&&) noexcept = default;
 
 TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3d& point) const {
+  Nearest best;
+  best.distance = std::numeric_limits<double>::infinity();
+  auto consider = [&](uint32_t triangle) {
+    const auto& c = index_->corners[triangle];
+    Eigen::Vector3d closest = closest_point_on_triangle(point, c[0], c[1], c[2]);
+    double distance = (closest - point).norm();
+    auto id = static_cast<int32_t>(triangle);
+    if (distance < best.distance || (distance == best.distance && id < best.triangle))
+      best = {distance, id, closest};
+  };
   size_t count = index_->candidate_count;
   std::vector<uint32_t> ids(count);
   std::vector<double> squared(count);
   count = index_->tree->knnSearch(point.data(), count, ids.data(), squared.data());
-  Nearest best;
-  best.distance = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < count; ++i) {
-    const auto& c = index_->corners[ids[i]];
-    Eigen::Vector3d closest = closest_point_on_triangle(point, c[0], c[1], c[2]);
-    double distance = (closest - point).norm();
-    if (distance < best.distance ||
-        (distance == best.distance && static_cast<int32_t>(ids[i]) < best.triangle)) {
-      best = {distance, static_cast<int32_t>(ids[i]), closest};
-    }
-  }
+  for (size_t i = 0; i < count; ++i) consider(ids[i]);
+  // No triangle nearer than `best` has its centroid farther than this.
+  double bound = best.distance + index_->largest_radius;
+  std::vector<std::pair<uint32_t, double>> within;
+  nanoflann::SearchParams params;
+  params.sorted = false;
+  index_->tree->radiusSearch(point.data(), bound * bound, within, params);
+  for (const auto& [triangle, squared_distance] : within) consider(triangle);
   return best;
 }
 

@@ -11,11 +11,11 @@ namespace hair {
 /// Row-major n x 3 int32 triangle vertex ids.
 using Triangles3i = Eigen::Matrix<int32_t, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
-/// Unsigned distance from points to a triangle mesh. A k-d tree (nanoflann) over
-/// triangle centroids proposes the `candidate_count` nearest triangles, and the exact
-/// point-triangle distance is taken over them; this is exact whenever the nearest
-/// triangle's centroid is among the candidates, which holds for meshes whose
-/// triangles are small against the query distance or of even size (body meshes).
+/// Exact unsigned distance from points to a triangle mesh. A k-d tree (nanoflann) over
+/// triangle centroids proposes the `candidate_count` nearest triangles; their nearest
+/// distance d bounds the answer, and every triangle whose centroid lies within d + R
+/// (R: the largest distance from a triangle's centroid to its corners) is then checked
+/// too, since no other triangle can be nearer. Cheap for meshes of even triangles.
 class TriangleMeshDistance {
  public:
   /// @param vertices   #V x 3 positions

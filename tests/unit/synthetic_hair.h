@@ -65,8 +65,11 @@ inline PolyMesh snowman_body(int segments = 48) {
     sphere.push_back({0.1 * std::sin(polar), 1.6 + 0.1 * std::cos(polar)});
   }
   add_revolution(sphere);
-  add_revolution({{0.05, 1.56}, {0.05, 1.48}, {0.05, 1.40}});
-  add_revolution({{0.2, 1.40}, {0.2, 1.2}, {0.2, 1.0}});
+  std::vector<Eigen::Vector2d> neck, shoulders;  // rings every centimetre, as a body mesh has
+  for (int i = 0; i <= 16; ++i) neck.push_back({0.05, 1.56 - 0.01 * i});
+  for (int i = 0; i <= 40; ++i) shoulders.push_back({0.2, 1.40 - 0.01 * i});
+  add_revolution(neck);
+  add_revolution(shoulders);
   return body;
 }
 
