@@ -306,11 +306,11 @@ std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices, const Triang
   return scalp;
 }
 
-void append_rail(StrandSet& strands, const Points3f& vertices, const std::vector<int32_t>& rail,
+void append_rail(std::vector<Points3f>& polylines, const Points3f& vertices, const std::vector<int32_t>& rail,
                  std::vector<int32_t>& source_vertex) {
   Points3f points(static_cast<Eigen::Index>(rail.size()), 3);
   for (size_t i = 0; i < rail.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = vertices.row(rail[i]);
-  strands.append_strand(points);
+  polylines.push_back(std::move(points));
   source_vertex.insert(source_vertex.end(), rail.begin(), rail.end());
 }
 
@@ -409,6 +409,7 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
     if (!region.decision) region.decision = decide_orientation(region.evidence, thresholds, conventions);
 
   // Strands, group by group.
+  std::vector<Points3f> polylines;
   std::vector<int32_t> strand_group, strand_rail, source_vertex;
   size_t next_region = 0;
   for (int32_t p = 0; p < patches.patch_count(); ++p) {
@@ -416,7 +417,7 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
     size_t largest_rail_count = 0;
     OrientationDecision group_decision{false, OrientationRule::height, 0.0f};
     auto add_rail = [&](const std::vector<int32_t>& rail) {
-      append_rail(result.strands, vertices, rail, source_vertex);
+      append_rail(polylines, vertices, rail, source_vertex);
       strand_group.push_back(p);
       strand_rail.push_back(rail_in_patch++);
     };
@@ -448,12 +449,12 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
       evidence.height_slope = (first.y() - last.y()) / length;
       group_decision = *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
       if (group_decision.reverse) polyline = polyline.colwise().reverse().eval();
-      result.strands.append_strand(polyline);
+      polylines.push_back(polyline);
       source_vertex.insert(source_vertex.end(), static_cast<size_t>(polyline.rows()), -1);
       strand_group.push_back(p);
       strand_rail.push_back(rail_in_patch++);
     }
-    result.group_first_strand.push_back(static_cast<int32_t>(result.strands.strand_count()));
+    result.group_first_strand.push_back(static_cast<int32_t>(polylines.size()));
     result.group_kind.push_back(kind);
     result.group_rule.push_back(group_decision.rule);
     result.group_confidence.push_back(group_decision.confidence);
@@ -461,6 +462,7 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
     ++result.stats.groups_by_rule[static_cast<size_t>(group_decision.rule)];
     ++result.stats.groups_by_kind[static_cast<size_t>(kind)];
   }
+  result.strands = strand_set_from_polylines(polylines);
   result.strands.strand_attributes["group"] = std::move(strand_group);
   result.strands.strand_attributes["rail"] = std::move(strand_rail);
   result.strands.point_attributes["source_vertex"] = std::move(source_vertex);

@@ -35,6 +35,17 @@ void check_column_lengths(const std::map<std::string, AttributeColumn>& columns,
 
 }  // namespace
 
+StrandSet strand_set_from_polylines(const std::vector<Points3f>& polylines) {
+  StrandSet strands;
+  strands.offsets.reserve(polylines.size() + 1);
+  int64_t total = 0;
+  for (const Points3f& polyline : polylines) strands.offsets.push_back(total += polyline.rows());
+  strands.points.resize(total, 3);
+  for (size_t s = 0; s < polylines.size(); ++s)
+    strands.points.middleRows(strands.offsets[s], polylines[s].rows()) = polylines[s];
+  return strands;
+}
+
 // Each append copies every point (an Eigen matrix has no spare capacity): fine for
 // building small sets; bulk builders size `points` and `offsets` once and fill them.
 void StrandSet::append_strand(const Points3f& strand_points) {

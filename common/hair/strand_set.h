@@ -38,6 +38,10 @@ struct StrandSet {
   void append_strand(const Points3f& strand_points);
 };
 
+/// A strand set of `polylines` (each #n x 3, root first), built in one allocation;
+/// prefer it to repeated append_strand() for more than a few strands.
+StrandSet strand_set_from_polylines(const std::vector<Points3f>& polylines);
+
 /// Throws hair::Error (runtime) naming the first violation: offsets not starting at 0,
 /// decreasing, not ending at #points; a strand with fewer than `min_points_per_strand`
 /// points; a non-finite coordinate (names the strand); an attribute of the wrong length.

@@ -101,3 +101,24 @@ TEST(StrandSet, CheckNamesAttributesOfTheWrongLength) {
 }
 
 }  // namespace
+
+namespace hair {
+namespace {
+
+TEST(StrandSetFromPolylines, MatchesAppendingOneByOne) {
+  std::vector<Points3f> polylines;
+  StrandSet appended;
+  for (int s = 0; s < 5; ++s) {
+    Points3f polyline(2 + s, 3);
+    for (int i = 0; i < polyline.rows(); ++i) polyline.row(i) << static_cast<float>(s), static_cast<float>(i), 0.5f;
+    polylines.push_back(polyline);
+    appended.append_strand(polyline);
+  }
+  StrandSet built = strand_set_from_polylines(polylines);
+  EXPECT_EQ(built.offsets, appended.offsets);
+  EXPECT_TRUE(built.points == appended.points);
+  EXPECT_EQ(strand_set_from_polylines({}).strand_count(), 0);
+}
+
+}  // namespace
+}  // namespace hair
