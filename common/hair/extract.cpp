@@ -301,7 +301,7 @@ std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices, const Triang
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (int k = 0; k < 3; ++k)
       centroid += body_vertices.row(body_triangles(t, k)).cast<double>().transpose() / 3.0;
-    if (centroid.y() >= neck_y && hair_distance.distance(centroid) <= max_distance) scalp[t] = 1;
+    if (centroid.y() >= neck_y && hair_distance.is_within(centroid, max_distance)) scalp[t] = 1;
   }
   return scalp;
 }

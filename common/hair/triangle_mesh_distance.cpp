@@ -20,28 +20,60 @@ struct TriangleMeshDistance::Index {
   using Tree = nanoflann::KDTreeSingleIndexAdaptor<
       nanoflann::L2_Simple_Adaptor<double, Centroids>, Centroids, 3>;
 
-  std::vector<std::array<Eigen::Vector3d, 3>> corners;
+  std::vector<std::array<Eigen::Vector3d, 3>> corners;  ///< per indexed piece
+  std::vector<int32_t> source_triangle;                  ///< per indexed piece
   Centroids centroids;
   std::unique_ptr<Tree> tree;
-  size_t candidate_count = 16;
+  size_t candidate_count = 4;
   double largest_radius = 0;  ///< largest centroid-to-corner distance of a triangle
 };
+
+namespace {
+
+double piece_radius(const std::array<Eigen::Vector3d, 3>& c) {
+  Eigen::Vector3d centroid = (c[0] + c[1] + c[2]) / 3.0;
+  return std::max({(c[0] - centroid).norm(), (c[1] - centroid).norm(), (c[2] - centroid).norm()});
+}
+
+}  // namespace
 
 TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles,
                                            int candidate_count)
     : index_(std::make_unique<Index>()) {
-  index_->candidate_count =
-      std::min<size_t>(static_cast<size_t>(std::max(1, candidate_count)),
-                       static_cast<size_t>(triangles.rows()));
+  std::vector<std::array<Eigen::Vector3d, 3>> all(static_cast<size_t>(triangles.rows()));
+  std::vector<double> radii(all.size());
   for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
-    std::array<Eigen::Vector3d, 3> corner;
-    for (int k = 0; k < 3; ++k) corner[k] = vertices.row(triangles(t, k)).cast<double>().transpose();
-    Eigen::Vector3d centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
-    for (const Eigen::Vector3d& c : corner)
-      index_->largest_radius = std::max(index_->largest_radius, (c - centroid).norm());
-    index_->corners.push_back(corner);
-    index_->centroids.points.push_back(centroid);
+    for (int k = 0; k < 3; ++k) all[t][k] = vertices.row(triangles(t, k)).cast<double>().transpose();
+    radii[t] = piece_radius(all[t]);
   }
+  // Triangles much larger than the typical one are indexed as pieces (split at their
+  // edge midpoints), so that the search bound below stays small; each piece answers
+  // for its own triangle, so distances stay exact.
+  std::vector<double> sorted = radii;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  double target_radius = sorted.empty() ? 0.0 : 2.0 * std::max(sorted[sorted.size() / 2], 1e-12);
+  std::vector<std::pair<std::array<Eigen::Vector3d, 3>, int32_t>> stack;
+  for (size_t t = 0; t < all.size(); ++t) {
+    stack.push_back({all[t], static_cast<int32_t>(t)});
+    while (!stack.empty()) {
+      auto [c, id] = stack.back();
+      stack.pop_back();
+      if (piece_radius(c) > target_radius) {
+        Eigen::Vector3d ab = (c[0] + c[1]) / 2, bc = (c[1] + c[2]) / 2, ca = (c[2] + c[0]) / 2;
+        stack.push_back({{c[0], ab, ca}, id});
+        stack.push_back({{ab, c[1], bc}, id});
+        stack.push_back({{ca, bc, c[2]}, id});
+        stack.push_back({{ab, bc, ca}, id});
+        continue;
+      }
+      index_->largest_radius = std::max(index_->largest_radius, piece_radius(c));
+      index_->corners.push_back(c);
+      index_->source_triangle.push_back(id);
+      index_->centroids.points.push_back((c[0] + c[1] + c[2]) / 3.0);
+    }
+  }
+  index_->candidate_count = std::min<size_t>(static_cast<size_t>(std::max(1, candidate_count)),
+                                             index_->corners.size());
   index_->tree = std::make_unique<Index::Tree>(3, index_->centroids,
                                                nanoflann::KDTreeSingleIndexAdaptorParams(10));
   index_->tree->buildIndex();
@@ -54,11 +86,11 @@ TriangleMeshDistance& TriangleMeshDistance::operator=(TriangleMeshDistance&&) no
 TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3d& point) const {
   Nearest best;
   best.distance = std::numeric_limits<double>::infinity();
-  auto consider = [&](uint32_t triangle) {
-    const auto& c = index_->corners[triangle];
+  auto consider = [&](uint32_t piece) {
+    const auto& c = index_->corners[piece];
     Eigen::Vector3d closest = closest_point_on_triangle(point, c[0], c[1], c[2]);
     double distance = (closest - point).norm();
-    auto id = static_cast<int32_t>(triangle);
+    int32_t id = index_->source_triangle[piece];
     if (distance < best.distance || (distance == best.distance && id < best.triangle))
       best = {distance, id, closest};
   };
@@ -73,8 +105,21 @@ TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3
   nanoflann::SearchParams params;
   params.sorted = false;
   index_->tree->radiusSearch(point.data(), bound * bound, within, params);
-  for (const auto& [triangle, squared_distance] : within) consider(triangle);
+  for (const auto& [piece, squared_distance] : within) consider(piece);
   return best;
+}
+
+bool TriangleMeshDistance::is_within(const Eigen::Vector3d& point, double radius) const {
+  double bound = radius + index_->largest_radius;
+  std::vector<std::pair<uint32_t, double>> within;
+  nanoflann::SearchParams params;
+  params.sorted = true;  // nearest centroids first: the likeliest to be within
+  index_->tree->radiusSearch(point.data(), bound * bound, within, params);
+  for (const auto& [piece, squared_distance] : within) {
+    const auto& c = index_->corners[piece];
+    if ((closest_point_on_triangle(point, c[0], c[1], c[2]) - point).norm() <= radius) return true;
+  }
+  return false;
 }
 
 Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,

@@ -15,13 +15,14 @@ using Triangles3i = Eigen::Matrix<int32_t, Eigen::Dynamic, 3, Eigen::RowMajor>;
 /// triangle centroids proposes the `candidate_count` nearest triangles; their nearest
 /// distance d bounds the answer, and every triangle whose centroid lies within d + R
 /// (R: the largest distance from a triangle's centroid to its corners) is then checked
-/// too, since no other triangle can be nearer. Cheap for meshes of even triangles.
+/// too, since no other triangle can be nearer. Triangles over twice the median size are
+/// indexed as pieces (split at their edge midpoints) so that R stays small.
 class TriangleMeshDistance {
  public:
   /// @param vertices   #V x 3 positions
   /// @param triangles  #T x 3 vertex ids (non-empty)
   TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles,
-                       int candidate_count = 16);
+                       int candidate_count = 4);
   ~TriangleMeshDistance();
   TriangleMeshDistance(TriangleMeshDistance&&) noexcept;
   TriangleMeshDistance& operator=(TriangleMeshDistance&&) noexcept;
@@ -36,6 +37,8 @@ class TriangleMeshDistance {
   Nearest nearest(const Eigen::Vector3d& point) const;
   /// Distance only; thread-safe, like nearest().
   double distance(const Eigen::Vector3d& point) const { return nearest(point).distance; }
+  /// Whether some triangle lies within `radius` of `point` (cheaper than distance()).
+  bool is_within(const Eigen::Vector3d& point, double radius) const;
 
  private:
   struct Index;

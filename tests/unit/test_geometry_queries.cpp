@@ -113,3 +113,26 @@ TEST(HeadMeasures, SnowmanNeckIsFound) {
 
 }  // namespace
 }  // namespace hair
+
+namespace hair {
+namespace {
+
+TEST(TriangleMeshDistance, LargeTrianglesAmongSmallOnesStayExact) {
+  // One huge triangle beside a fine strip: pieces of the big one must answer for it.
+  PolyMesh mesh = testing::hair_strip({{0, 0, 0}, {0, -0.01, 0}, {0, -0.02, 0}}, Eigen::Vector3d::UnitX(), 0.01, {});
+  PolyMesh big;
+  big.vertices.resize(3, 3);
+  big.vertices << 1, 0, 0, 3, 0, 0, 2, 2, 0;
+  big.append_face(std::vector<int32_t>{0, 1, 2});
+  testing::append_mesh(mesh, big);
+  Triangles3i triangles = fan_triangulation(mesh.face_offsets, mesh.face_vertices);
+  TriangleMeshDistance distance(mesh.vertices, triangles);
+  EXPECT_NEAR(distance.distance({2, 0.5, 0.3}), 0.3, 1e-9);  // above the big one's middle
+  EXPECT_EQ(distance.nearest({2, 0.5, 0.3}).triangle, triangles.rows() - 1);
+  EXPECT_TRUE(distance.is_within({2, 0.5, 0.3}, 0.31));
+  EXPECT_FALSE(distance.is_within({2, 0.5, 0.3}, 0.29));
+  EXPECT_NEAR(distance.distance({0, 0.5, 0}), 0.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace hair
