@@ -10,13 +10,14 @@
 int main(int argc, char** argv) {
   CLI::App app("Render a hairstyle HDF5 file as a PNG (front, side and back views).",
                "hair-render");
-  std::string input_path, output_path, colouring = "group";
+  std::string input_path, output_path, colouring = "group", title;
   int size_px = 512;
   bool no_body = false;
   app.add_option("FILE", input_path, "extract.h5 (other stages' files as they come)")->required();
   app.add_option("-o,--output", output_path, "PNG to write")->required();
   app.add_option("--color-by", colouring, "group, direction, rule or kind");
   app.add_option("--size", size_px, "pixels per view")->check(CLI::Range(64, 4096));
+  app.add_option("--title", title, "text at the top left (default: the file and colouring)");
   app.add_flag("--no-body", no_body, "do not draw the body (it still hides what is behind it)");
   try {
     app.parse(argc, argv);
@@ -29,7 +30,7 @@ int main(int argc, char** argv) {
     hair::RenderOptions options;
     options.view_size_px = size_px;
     options.draw_body = !no_body;
-    options.title = input_path + " (" + colouring + ")";
+    options.title = title.empty() ? input_path + " (" + colouring + ")" : title;
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
     cv::Mat image = hair::extract_picture(file, hair::parse_extract_colouring(colouring), options);
     hair::write_png(image, output_path);

@@ -126,10 +126,17 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
       int px = static_cast<int>(middle.x()), py = static_cast<int>(middle.y());
       if (px >= 0 && py >= 0 && px < size && py < size && depth.at<double>(py, px) > z + depth_tolerance_m)
         continue;
-      cv::Vec3b c = colours[i];
-      cv::line(view, cv::Point(static_cast<int>(std::lround(screen[i].x() * 16)), static_cast<int>(std::lround(screen[i].y() * 16))),
-               cv::Point(static_cast<int>(std::lround(screen[i + 1].x() * 16)), static_cast<int>(std::lround(screen[i + 1].y() * 16))),
-               cv::Scalar(c[0], c[1], c[2]), thickness, cv::LINE_AA, 4);
+      // Long segments are drawn in pieces so that colours blend along them.
+      Eigen::Vector2d from = screen[i].head<2>(), to = screen[i + 1].head<2>();
+      int pieces = std::clamp(static_cast<int>((to - from).norm() / 6.0), 1, 16);
+      for (int k = 0; k < pieces; ++k) {
+        double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
+        cv::Vec3d blended = cv::Vec3d(colours[i]) * (1 - (t0 + t1) / 2) + cv::Vec3d(colours[i + 1]) * ((t0 + t1) / 2);
+        Eigen::Vector2d a = from + t0 * (to - from), b = from + t1 * (to - from);
+        cv::line(view, cv::Point(static_cast<int>(std::lround(a.x() * 16)), static_cast<int>(std::lround(a.y() * 16))),
+                 cv::Point(static_cast<int>(std::lround(b.x() * 16)), static_cast<int>(std::lround(b.y() * 16))),
+                 cv::Scalar(blended[0], blended[1], blended[2]), thickness, cv::LINE_AA, 4);
+      }
     }
   }
   if (!options.title.empty())
@@ -179,7 +186,7 @@ PointColours colours_by_table(const StrandSet& strands, const std::vector<int32_
 void write_png(const cv::Mat& image, const std::string& path) {
   bool written = false;
   try {
-    written = cv::imwrite(path, image);
+    written = cv::imwrite(path, image, {cv::IMWRITE_PNG_COMPRESSION, 9});
   } catch (const cv::Exception& e) {
     throw Error::runtime(path, std::string("cannot write PNG: ") + e.what());
   }
