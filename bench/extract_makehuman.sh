@@ -31,7 +31,7 @@ for mesh in "$makehuman"/hair/*.obj; do
       -o "$work/$model.h5" 2>"$work/$model.log"
     times+=($(( ($(date +%s%N) - start) / 1000000 )))
   done
-  counts=$(sed -n 's/.*: info: \([0-9]*\) groups, \([0-9]*\) strands, \([0-9]*\) points.*/\1 | \2 | \3/p' "$work/$model.log")
+  counts=$(sed -n 's/.*: info: .*: \([0-9]*\) groups, \([0-9]*\) strands, \([0-9]*\) points.*/\1 | \2 | \3/p' "$work/$model.log")
   rules=$(sed -n 's/.*orientation rules: vertex_order \([0-9]*\), scalp_distance \([0-9]*\), continuation \([0-9]*\), uv \([0-9]*\), height \([0-9]*\), parting \([0-9]*\)/\1 | \2 | \3 | \4 | \5 | \6/p' "$work/$model.log")
   vertices=$(grep -c '^v ' "$mesh")
   echo "| $model | $vertices | $counts | $rules | $(printf '%s\n' "${times[@]}" | median) |"

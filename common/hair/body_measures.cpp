@@ -31,7 +31,8 @@ HeadMeasures head_measures(const PolyMesh& body, const std::string& file) {
       Eigen::Vector3d b = body.vertices.row(face[(c + 1) % face.size()]).cast<double>().transpose();
       if (a.y() < b.y()) std::swap(a, b);  // a above b
       int first = std::max(0, static_cast<int>(std::ceil((top - a.y()) / thickness - 0.5)));
-      int last = std::min(slice_count - 1, static_cast<int>(std::floor((top - b.y()) / thickness - 0.5)));
+      int last =
+          std::min(slice_count - 1, static_cast<int>(std::floor((top - b.y()) / thickness - 0.5)));
       for (int slice = first; slice <= last; ++slice) {
         double t = a.y() > b.y() ? (a.y() - slice_centre(slice)) / (a.y() - b.y()) : 0.0;
         Eigen::Vector3d p = a + t * (b - a);

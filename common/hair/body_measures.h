@@ -6,11 +6,11 @@ namespace hair {
 
 /// Where the head is on a body mesh (+Y up).
 struct HeadMeasures {
-  double head_top_y = 0;    ///< highest body vertex (crown)
-  double neck_y = 0;        ///< height of the narrowest horizontal slice of the neck
-  double head_height = 0;   ///< H = head_top_y - neck_y, the normaliser of eq. (1)
-  double head_width = 0;    ///< widest horizontal slice of the head
-  double neck_width = 0;    ///< width at neck_y
+  double head_top_y = 0;   ///< highest body vertex (crown)
+  double neck_y = 0;       ///< height of the narrowest horizontal slice of the neck
+  double head_height = 0;  ///< H = head_top_y - neck_y, the normaliser of eq. (1)
+  double head_width = 0;   ///< widest horizontal slice of the head
+  double neck_width = 0;   ///< width at neck_y
 };
 
 /// Measures the head of an upright body mesh (+Y up).

@@ -16,7 +16,7 @@ namespace {
 struct RegionRails {
   int32_t patch = 0;
   size_t region_in_patch = 0;
-  std::vector<std::vector<int32_t>> open_rails;   ///< consistently oriented chains
+  std::vector<std::vector<int32_t>> open_rails;    ///< consistently oriented chains
   std::vector<std::vector<int32_t>> parted_rails;  ///< halves of parted rails, top down
   OrientationEvidence evidence;
   std::optional<OrientationDecision> decision;
@@ -60,8 +60,9 @@ std::vector<std::vector<int>> along_families(const std::vector<PatchTopology>& t
       int longer = f[0].mean_chain_length >= f[1].mean_chain_length ? 0 : 1;
       bool clear = f[longer].mean_chain_length >=
                    params.along_length_ratio * f[1 - longer].mean_chain_length;
-      bool texture_tells = texture_axis_is_v && f[0].v_alignment >= 0 &&
-                           std::abs(f[0].v_alignment - f[1].v_alignment) >= min_alignment_difference;
+      bool texture_tells =
+          texture_axis_is_v && f[0].v_alignment >= 0 &&
+          std::abs(f[0].v_alignment - f[1].v_alignment) >= min_alignment_difference;
       if (clear || !texture_tells) {
         along[p].push_back(longer);
       } else {
@@ -124,7 +125,8 @@ std::optional<std::array<std::vector<int32_t>, 2>> part_draped_rail(
     double length = rail_length(vertices, *side);
     double drop = vertices(side->front(), 1) - vertices(side->back(), 1);
     if (length < min_side_share * total || drop < min_side_drop * length) return std::nullopt;
-    if (head_distance.distance(vertices.row(side->back()).cast<double>().transpose()) < min_end_distance)
+    if (head_distance.distance(vertices.row(side->back()).cast<double>().transpose()) <
+        min_end_distance)
       return std::nullopt;
   }
   return std::array<std::vector<int32_t>, 2>{before, after};
@@ -152,7 +154,8 @@ OrientationEvidence orientation_evidence(const Points3f& vertices,
     total_length += length;
   }
   evidence.has_ordered_rails = growing + falling > 0;
-  if (evidence.has_ordered_rails) evidence.vertex_order_vote = (growing - falling) / (growing + falling);
+  if (evidence.has_ordered_rails)
+    evidence.vertex_order_vote = (growing - falling) / (growing + falling);
   if (total_length > 0) {
     evidence.scalp_distance_slope = distance_change / total_length;
     evidence.height_slope = height_drop / total_length;
@@ -200,8 +203,10 @@ struct StrandEnd {
 };
 
 /// Unit direction of the rail's first (or last) segment, from its first to its last point.
-Eigen::Vector3f end_direction(const Points3f& vertices, const std::vector<int32_t>& rail, bool at_last) {
-  Eigen::Vector3f d = at_last ? Eigen::Vector3f(vertices.row(rail[rail.size() - 1]) - vertices.row(rail[rail.size() - 2]))
+Eigen::Vector3f end_direction(const Points3f& vertices, const std::vector<int32_t>& rail,
+                              bool at_last) {
+  Eigen::Vector3f d = at_last ? Eigen::Vector3f(vertices.row(rail[rail.size() - 1]) -
+                                                vertices.row(rail[rail.size() - 2]))
                               : Eigen::Vector3f(vertices.row(rail[1]) - vertices.row(rail[0]));
   float norm = d.norm();
   return norm > 0 ? Eigen::Vector3f(d / norm) : Eigen::Vector3f::Zero();
@@ -234,11 +239,13 @@ int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRail
   for (const RegionRails& region : regions) {
     for (const auto& rail : region.parted_rails) add_ends(rail, false, region.patch);
     if (region.decision)
-      for (const auto& rail : region.open_rails) add_ends(rail, region.decision->reverse, region.patch);
+      for (const auto& rail : region.open_rails)
+        add_ends(rail, region.decision->reverse, region.patch);
   }
   if (ends.empty()) return 0;
   Points3f end_points(static_cast<Eigen::Index>(positions.size()), 3);
-  for (size_t i = 0; i < positions.size(); ++i) end_points.row(static_cast<Eigen::Index>(i)) = positions[i].transpose();
+  for (size_t i = 0; i < positions.size(); ++i)
+    end_points.row(static_cast<Eigen::Index>(i)) = positions[i].transpose();
   PointIndex index(end_points);
 
   // +1: this end of the rail is its root; -1: its tip; 0: no neighbour.
@@ -258,8 +265,10 @@ int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRail
     if (region.decision || region.open_rails.empty()) continue;
     double forward = 0, backward = 0, rails_with_neighbour = 0;
     for (const auto& rail : region.open_rails) {
-      int first_is_root = end_vote(vertices.row(rail.front()).transpose(), -end_direction(vertices, rail, false), region.patch);
-      int last_is_root = end_vote(vertices.row(rail.back()).transpose(), end_direction(vertices, rail, true), region.patch);
+      int first_is_root = end_vote(vertices.row(rail.front()).transpose(),
+                                   -end_direction(vertices, rail, false), region.patch);
+      int last_is_root = end_vote(vertices.row(rail.back()).transpose(),
+                                  end_direction(vertices, rail, true), region.patch);
       int score = first_is_root - last_is_root;  // > 0: the rail runs as it is
       forward += score > 0 ? 1 : 0;
       backward += score < 0 ? 1 : 0;
@@ -290,9 +299,9 @@ void decide_by_continuation(const Points3f& vertices, std::vector<RegionRails>& 
 }
 
 /// Marks body triangles above the neck lying within `max_distance` of the hair mesh.
-std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices, const Triangles3i& body_triangles,
-                                     double neck_y, const PolyMesh& hair_mesh,
-                                     double max_distance) {
+std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
+                                     const Triangles3i& body_triangles, double neck_y,
+                                     const PolyMesh& hair_mesh, double max_distance) {
   TriangleMeshDistance hair_distance(
       hair_mesh.vertices, fan_triangulation(hair_mesh.face_offsets, hair_mesh.face_vertices));
   std::vector<uint8_t> scalp(static_cast<size_t>(body_triangles.rows()), 0);
@@ -306,10 +315,11 @@ std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices, const Triang
   return scalp;
 }
 
-void append_rail(std::vector<Points3f>& polylines, const Points3f& vertices, const std::vector<int32_t>& rail,
-                 std::vector<int32_t>& source_vertex) {
+void append_rail(std::vector<Points3f>& polylines, const Points3f& vertices,
+                 const std::vector<int32_t>& rail, std::vector<int32_t>& source_vertex) {
   Points3f points(static_cast<Eigen::Index>(rail.size()), 3);
-  for (size_t i = 0; i < rail.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = vertices.row(rail[i]);
+  for (size_t i = 0; i < rail.size(); ++i)
+    points.row(static_cast<Eigen::Index>(i)) = vertices.row(rail[i]);
   polylines.push_back(std::move(points));
   source_vertex.insert(source_vertex.end(), rail.begin(), rail.end());
 }
@@ -337,11 +347,14 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   Eigen::Index head_triangle_count = 0;
   for (Eigen::Index t = 0; t < result.body_triangles.rows(); ++t) {
     double top_y = -std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 3; ++k) top_y = std::max<double>(top_y, result.body_vertices(result.body_triangles(t, k), 1));
-    if (top_y >= result.head.neck_y) head_triangles.row(head_triangle_count++) = result.body_triangles.row(t);
+    for (int k = 0; k < 3; ++k)
+      top_y = std::max<double>(top_y, result.body_vertices(result.body_triangles(t, k), 1));
+    if (top_y >= result.head.neck_y)
+      head_triangles.row(head_triangle_count++) = result.body_triangles.row(t);
   }
   head_triangles.conservativeResize(head_triangle_count, 3);
-  if (head_triangle_count == 0) throw Error::bad_input(body_file, "body mesh has no head above the neck");
+  if (head_triangle_count == 0)
+    throw Error::bad_input(body_file, "body mesh has no head above the neck");
   TriangleMeshDistance head_distance(result.body_vertices, head_triangles);
 
   // The hair: quads, patches, edge families.
@@ -368,7 +381,8 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
       region.region_in_patch = r;
       const EdgeFamily& along_family = topologies[p].regions[r].families[along[p][r]];
       double longest = 0;
-      for (const auto& chain : along_family.chains) longest = std::max(longest, rail_length(vertices, chain));
+      for (const auto& chain : along_family.chains)
+        longest = std::max(longest, rail_length(vertices, chain));
       for (const auto& chain : along_family.chains) {
         if (rail_length(vertices, chain) < params.min_rail_length_share * longest) {
           ++result.stats.fragments_dropped;
@@ -377,7 +391,8 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
           ++result.stats.rails_parted;
         } else if (auto halves = part_draped_rail(
                        vertices, chain, params.parting_min_side_share, params.parting_min_side_drop,
-                       head_distance, params.parting_min_end_distance_h * result.head.head_height)) {
+                       head_distance,
+                       params.parting_min_end_distance_h * result.head.head_height)) {
           for (auto& half : *halves) region.parted_rails.push_back(half);
           ++result.stats.rails_parted;
         } else {
@@ -392,9 +407,9 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
     const RegionRails& region = regions[i];
     int32_t p = region.patch;
     size_t r = region.region_in_patch;
-    regions[i].evidence = orientation_evidence(vertices, region.open_rails,
-                                               topologies[p].regions[r].families[along[p][r]],
-                                               head_distance, params);
+    regions[i].evidence =
+        orientation_evidence(vertices, region.open_rails,
+                             topologies[p].regions[r].families[along[p][r]], head_distance, params);
   }
 
   // Decide directions: confident regions first, then the mesh's conventions for the rest.
@@ -403,10 +418,12 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   MeshConventions conventions = mesh_conventions(regions, thresholds, params);
   result.stats.vertex_order_trusted = conventions.trust_vertex_order;
   result.stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
-  decide_by_continuation(vertices, regions,
-                         static_cast<float>(params.continuation_radius_h * result.head.head_height));
+  decide_by_continuation(
+      vertices, regions,
+      static_cast<float>(params.continuation_radius_h * result.head.head_height));
   for (RegionRails& region : regions)
-    if (!region.decision) region.decision = decide_orientation(region.evidence, thresholds, conventions);
+    if (!region.decision)
+      region.decision = decide_orientation(region.evidence, thresholds, conventions);
 
   // Strands, group by group.
   std::vector<Points3f> polylines;
@@ -445,9 +462,11 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
       Eigen::Vector3d last = polyline.row(polyline.rows() - 1).cast<double>().transpose();
       double length = std::max(1e-12, (last - first).norm());
       OrientationEvidence evidence;
-      evidence.scalp_distance_slope = (head_distance.distance(last) - head_distance.distance(first)) / length;
+      evidence.scalp_distance_slope =
+          (head_distance.distance(last) - head_distance.distance(first)) / length;
       evidence.height_slope = (first.y() - last.y()) / length;
-      group_decision = *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
+      group_decision =
+          *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
       if (group_decision.reverse) polyline = polyline.colwise().reverse().eval();
       polylines.push_back(polyline);
       source_vertex.insert(source_vertex.end(), static_cast<size_t>(polyline.rows()), -1);
@@ -468,8 +487,9 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   result.strands.point_attributes["source_vertex"] = std::move(source_vertex);
   check_strand_set(result.strands);
 
-  result.scalp_triangle = scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,
-                                          result.hair_mesh, params.scalp_distance_h * result.head.head_height);
+  result.scalp_triangle =
+      scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,
+                      result.hair_mesh, params.scalp_distance_h * result.head.head_height);
   return result;
 }
 

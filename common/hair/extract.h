@@ -59,7 +59,7 @@ struct ExtractStats {
   int64_t degenerate_faces_removed = 0;
   int64_t triangles_paired = 0;
   int64_t triangles_left = 0;
-  int64_t rails_parted = 0;  ///< closed or draped rails cut in two at their top
+  int64_t rails_parted = 0;       ///< closed or draped rails cut in two at their top
   int64_t fragments_dropped = 0;  ///< along-chains too short to be rails
   int64_t family_conflicts = 0;
   std::array<int64_t, 6> groups_by_rule{};  ///< indexed by OrientationRule
@@ -73,19 +73,19 @@ struct ExtractResult {
   /// Input strands, root first. Strand attributes "group" and "rail"; point
   /// attribute "source_vertex" (id in hair_mesh).
   StrandSet strands;
-  std::vector<int32_t> group_first_strand{0};     ///< #groups + 1
-  std::vector<PatchKind> group_kind;              ///< #groups
-  std::vector<OrientationRule> group_rule;        ///< #groups
-  std::vector<float> group_confidence;            ///< #groups
-  std::vector<int32_t> group_face_count;          ///< #groups
+  std::vector<int32_t> group_first_strand{0};  ///< #groups + 1
+  std::vector<PatchKind> group_kind;           ///< #groups
+  std::vector<OrientationRule> group_rule;     ///< #groups
+  std::vector<float> group_confidence;         ///< #groups
+  std::vector<int32_t> group_face_count;       ///< #groups
 
-  PolyMesh hair_mesh;                  ///< cleaned, scaled, triangles paired into quads
-  std::vector<int32_t> face_group;     ///< #faces of hair_mesh
+  PolyMesh hair_mesh;               ///< cleaned, scaled, triangles paired into quads
+  std::vector<int32_t> face_group;  ///< #faces of hair_mesh
 
-  Points3f body_vertices;              ///< #body vertices x 3
-  Triangles3i body_triangles;          ///< #body triangles x 3
-  std::vector<uint8_t> scalp_triangle; ///< #body triangles, 1 = scalp
-  HeadMeasures head;                   ///< in metres
+  Points3f body_vertices;               ///< #body vertices x 3
+  Triangles3i body_triangles;           ///< #body triangles x 3
+  std::vector<uint8_t> scalp_triangle;  ///< #body triangles, 1 = scalp
+  HeadMeasures head;                    ///< in metres
 
   ExtractStats stats;
 

@@ -51,8 +51,7 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
   params.add("parting_min_side_drop", p.parting_min_side_drop,
              "...each side drops by this share of its length...", ParamRange::closed(0, 1));
   params.add("parting_min_end_distance_h", p.parting_min_end_distance_h,
-             "...and both ends hang off the head by this distance, in H",
-             ParamRange::at_least(0));
+             "...and both ends hang off the head by this distance, in H", ParamRange::at_least(0));
   params.add("scalp_distance_h", p.scalp_distance_h,
              "body triangles above the neck within this distance of the hair mesh, in H, "
              "form the scalp",

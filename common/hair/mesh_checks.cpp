@@ -12,7 +12,9 @@ void check_mesh(const PolyMesh& mesh, const std::string& file) {
   if (mesh.face_count() == 0) throw Error::bad_input(file, "mesh has no faces");
   for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
     if (!mesh.vertices.row(v).allFinite())
-      throw Error::bad_input(file, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+      throw Error::bad_input(file,
+                             "vertex " + std::to_string(v + 1) +
+                                 " (counting from 1, as OBJ does) has a non-finite coordinate");
   for (int32_t v : mesh.face_vertices)
     if (v < 0 || v >= mesh.vertex_count())
       throw Error::bad_input(file, "face refers to vertex " + std::to_string(v) + " of " +

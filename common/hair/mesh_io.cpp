@@ -72,8 +72,8 @@ PolyMesh read_with_assimp(const std::filesystem::path& path) {
   // No triangulation: quads are kept so their rails can be read (section 4.1).
   const aiScene* scene = importer.ReadFile(path.string(), aiProcess_PreTransformVertices);
   if (scene == nullptr)
-    throw Error::bad_input(path.string(), std::string("cannot read mesh: ") +
-                                              importer.GetErrorString());
+    throw Error::bad_input(path.string(),
+                           std::string("cannot read mesh: ") + importer.GetErrorString());
   return mesh_from_scene(*scene);
 }
 
@@ -85,8 +85,7 @@ PolyMesh read_mesh(const std::filesystem::path& path, MeshReader reader) {
     throw Error::bad_input(path.string(), std::filesystem::exists(path, error)
                                               ? "not a regular file"
                                               : "no such file");
-  if (reader == MeshReader::automatic && lowercase_extension(path) == ".obj")
-    return read_obj(path);
+  if (reader == MeshReader::automatic && lowercase_extension(path) == ".obj") return read_obj(path);
   return read_with_assimp(path);
 }
 

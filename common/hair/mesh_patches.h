@@ -9,8 +9,8 @@ namespace hair {
 
 /// The patches of a hair mesh: connected components of faces that share a vertex.
 struct MeshPatches {
-  std::vector<int32_t> face_patch;                  ///< #faces patch id
-  std::vector<std::vector<int64_t>> patch_faces;    ///< #patches lists of face ids, ascending
+  std::vector<int32_t> face_patch;                ///< #faces patch id
+  std::vector<std::vector<int64_t>> patch_faces;  ///< #patches lists of face ids, ascending
   int32_t patch_count() const { return static_cast<int32_t>(patch_faces.size()); }
 };
 

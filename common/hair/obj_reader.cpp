@@ -78,8 +78,7 @@ class ObjParser {
         }
       } else if (keyword == "f") {
         face.clear();
-        for (std::string_view token = next_token(rest); !token.empty();
-             token = next_token(rest)) {
+        for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
           size_t slash = token.find('/');
           face.push_back(parse_index(token.substr(0, slash), positions.size() / 3, "vertex"));
           int32_t texcoord = -1;
@@ -103,7 +102,8 @@ class ObjParser {
     if (every_corner_has_uv) {
       mesh.corner_uv.resize(static_cast<Eigen::Index>(corner_texcoord.size()), 2);
       for (size_t corner = 0; corner < corner_texcoord.size(); ++corner) {
-        mesh.corner_uv(static_cast<Eigen::Index>(corner), 0) = texcoords[2 * corner_texcoord[corner]];
+        mesh.corner_uv(static_cast<Eigen::Index>(corner), 0) =
+            texcoords[2 * corner_texcoord[corner]];
         mesh.corner_uv(static_cast<Eigen::Index>(corner), 1) =
             texcoords[2 * corner_texcoord[corner] + 1];
       }

@@ -31,8 +31,8 @@ LocalEdges local_edges(const PolyMesh& mesh, std::span<const int64_t> faces) {
     for (size_t k = 0; k < vertex_ids.size(); ++k) {
       int32_t a = vertex_ids[k];
       int32_t b = vertex_ids[(k + 1) % vertex_ids.size()];
-      auto [it, inserted] = edge_of_key.try_emplace(undirected_edge_key(a, b),
-                                                    static_cast<int32_t>(local.edge_vertices.size()));
+      auto [it, inserted] = edge_of_key.try_emplace(
+          undirected_edge_key(a, b), static_cast<int32_t>(local.edge_vertices.size()));
       if (inserted) {
         local.edge_vertices.push_back({a, b});
         local.edge_faces.emplace_back();

@@ -45,8 +45,8 @@ struct PatchTopology {
   std::vector<QuadRegion> regions;
   int64_t face_count = 0;
   int64_t non_quad_faces = 0;
-  int32_t family_conflicts = 0;   ///< quads whose edges could not be coloured consistently
-  int32_t interior_poles = 0;     ///< interior vertices where other than 4 quads meet
+  int32_t family_conflicts = 0;  ///< quads whose edges could not be coloured consistently
+  int32_t interior_poles = 0;    ///< interior vertices where other than 4 quads meet
 };
 
 /// Reads the edge families and their chains of the patch made of `faces` (face ids

@@ -25,8 +25,8 @@ struct PointIndex::Tree {
 
 PointIndex::PointIndex(const Points3f& points) : tree_(std::make_unique<Tree>()) {
   tree_->cloud.points = points;
-  tree_->index = std::make_unique<Tree::Index>(3, tree_->cloud,
-                                               nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree_->index =
+      std::make_unique<Tree::Index>(3, tree_->cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree_->index->buildIndex();
 }
 
@@ -51,7 +51,8 @@ std::vector<int32_t> PointIndex::within(const Eigen::Vector3f& query, float radi
 }
 
 std::vector<int32_t> PointIndex::nearest(const Eigen::Vector3f& query, int count) const {
-  size_t wanted = std::min<size_t>(static_cast<size_t>(std::max(count, 0)), static_cast<size_t>(size()));
+  size_t wanted =
+      std::min<size_t>(static_cast<size_t>(std::max(count, 0)), static_cast<size_t>(size()));
   std::vector<uint32_t> found(wanted);
   std::vector<float> squared(wanted);
   wanted = tree_->index->knnSearch(query.data(), wanted, found.data(), squared.data());

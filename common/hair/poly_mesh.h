@@ -16,10 +16,10 @@ using Uv2f = Eigen::Matrix<float, Eigen::Dynamic, 2, Eigen::RowMajor>;
 /// come (quads mostly, some triangles). Vertex order is the source file's order,
 /// which the paper's root-to-tip convention relies on (section 3).
 struct PolyMesh {
-  Points3f vertices;                      ///< #vertices x 3
-  std::vector<int64_t> face_offsets{0};   ///< #faces + 1; face f owns corners [f], [f+1)
-  std::vector<int32_t> face_vertices;     ///< #corners vertex ids
-  Uv2f corner_uv;                         ///< #corners x 2, or 0 rows when the source has none
+  Points3f vertices;                     ///< #vertices x 3
+  std::vector<int64_t> face_offsets{0};  ///< #faces + 1; face f owns corners [f], [f+1)
+  std::vector<int32_t> face_vertices;    ///< #corners vertex ids
+  Uv2f corner_uv;                        ///< #corners x 2, or 0 rows when the source has none
 
   int64_t vertex_count() const { return vertices.rows(); }
   int64_t face_count() const { return static_cast<int64_t>(face_offsets.size()) - 1; }

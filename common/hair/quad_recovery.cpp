@@ -25,8 +25,10 @@ double corner_deviation_deg(const PolyMesh& mesh, const std::array<int32_t, 4>& 
   double worst = 0;
   for (int c = 0; c < 4; ++c) {
     Eigen::Vector3d here = mesh.vertices.row(quad[c]).cast<double>();
-    Eigen::Vector3d to_next = mesh.vertices.row(quad[(c + 1) % 4]).cast<double>().transpose() - here;
-    Eigen::Vector3d to_prev = mesh.vertices.row(quad[(c + 3) % 4]).cast<double>().transpose() - here;
+    Eigen::Vector3d to_next =
+        mesh.vertices.row(quad[(c + 1) % 4]).cast<double>().transpose() - here;
+    Eigen::Vector3d to_prev =
+        mesh.vertices.row(quad[(c + 3) % 4]).cast<double>().transpose() - here;
     double norms = to_next.norm() * to_prev.norm();
     if (norms <= 0) return 180.0;
     double angle = std::acos(std::clamp(to_next.dot(to_prev) / norms, -1.0, 1.0));
@@ -92,10 +94,9 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
     partner[candidate.face_b] = candidate.face_a;
     int64_t base_a = mesh.face_offsets[candidate.face_a];
     int64_t base_b = mesh.face_offsets[candidate.face_b];
-    quad_corners[candidate.face_a] = {base_a + candidate.corner_a,
-                                      base_b + (candidate.corner_b + 2) % 3,
-                                      base_a + (candidate.corner_a + 1) % 3,
-                                      base_a + (candidate.corner_a + 2) % 3};
+    quad_corners[candidate.face_a] = {
+        base_a + candidate.corner_a, base_b + (candidate.corner_b + 2) % 3,
+        base_a + (candidate.corner_a + 1) % 3, base_a + (candidate.corner_a + 2) % 3};
   }
 
   QuadRecovery recovery;

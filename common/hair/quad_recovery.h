@@ -8,9 +8,9 @@ namespace hair {
 
 /// What quad recovery did.
 struct QuadRecovery {
-  PolyMesh mesh;                ///< triangles paired into quads; other faces unchanged
-  int64_t triangles_paired = 0; ///< triangles merged (twice the quads made)
-  int64_t triangles_left = 0;   ///< triangles that found no partner
+  PolyMesh mesh;                     ///< triangles paired into quads; other faces unchanged
+  int64_t triangles_paired = 0;      ///< triangles merged (twice the quads made)
+  int64_t triangles_left = 0;        ///< triangles that found no partner
   std::vector<int64_t> source_face;  ///< #faces of `mesh`: a face of the input it came from
 };
 

@@ -25,14 +25,15 @@ std::optional<OrientationDecision> decide_orientation(
     }
   }
   if (distance_decides)
-    return OrientationDecision{
-        distance_reverse, OrientationRule::scalp_distance,
-        clamp01(std::abs(evidence.scalp_distance_slope) / (2 * thresholds.scalp_distance_min_slope))};
+    return OrientationDecision{distance_reverse, OrientationRule::scalp_distance,
+                               clamp01(std::abs(evidence.scalp_distance_slope) /
+                                       (2 * thresholds.scalp_distance_min_slope))};
   if (!conventions) return std::nullopt;
   if (conventions->uv_growth_sign && evidence.uv_growth &&
       std::abs(*evidence.uv_growth) >= thresholds.uv_min_growth) {
     bool reverse = (*evidence.uv_growth > 0 ? 1 : -1) != *conventions->uv_growth_sign;
-    return OrientationDecision{reverse, OrientationRule::uv, clamp01(std::abs(*evidence.uv_growth))};
+    return OrientationDecision{reverse, OrientationRule::uv,
+                               clamp01(std::abs(*evidence.uv_growth))};
   }
   return OrientationDecision{evidence.height_slope < 0, OrientationRule::height,
                              clamp01(std::abs(evidence.height_slope))};

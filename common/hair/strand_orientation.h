@@ -33,15 +33,15 @@ struct OrientationEvidence {
 
 /// Thresholds of the decision; see decide_orientation().
 struct OrientationThresholds {
-  double vertex_order_min_vote = 0.8;      ///< |vote| for the ordered rails to agree (90%)
-  double scalp_distance_min_slope = 0.2;   ///< |slope| for the head distance to decide
-  double uv_min_growth = 0.3;              ///< |uv growth| for the texture to decide
+  double vertex_order_min_vote = 0.8;     ///< |vote| for the ordered rails to agree (90%)
+  double scalp_distance_min_slope = 0.2;  ///< |slope| for the head distance to decide
+  double uv_min_growth = 0.3;             ///< |uv growth| for the texture to decide
 };
 
 /// What the rest of the mesh says, learnt from its confidently decided regions.
 struct MeshConventions {
-  bool trust_vertex_order = true;       ///< false when geometry contradicts the ids mostly
-  std::optional<int> uv_growth_sign;    ///< sign of v growth from root to tip, if consistent
+  bool trust_vertex_order = true;     ///< false when geometry contradicts the ids mostly
+  std::optional<int> uv_growth_sign;  ///< sign of v growth from root to tip, if consistent
 };
 
 struct OrientationDecision {

@@ -17,11 +17,11 @@ struct TriangleMeshDistance::Index {
       return false;
     }
   };
-  using Tree = nanoflann::KDTreeSingleIndexAdaptor<
-      nanoflann::L2_Simple_Adaptor<double, Centroids>, Centroids, 3>;
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Centroids>,
+                                                   Centroids, 3>;
 
   std::vector<std::array<Eigen::Vector3d, 3>> corners;  ///< per indexed piece
-  std::vector<int32_t> source_triangle;                  ///< per indexed piece
+  std::vector<int32_t> source_triangle;                 ///< per indexed piece
   Centroids centroids;
   std::unique_ptr<Tree> tree;
   size_t candidate_count = 4;
@@ -43,14 +43,16 @@ TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Trian
   std::vector<std::array<Eigen::Vector3d, 3>> all(static_cast<size_t>(triangles.rows()));
   std::vector<double> radii(all.size());
   for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
-    for (int k = 0; k < 3; ++k) all[t][k] = vertices.row(triangles(t, k)).cast<double>().transpose();
+    for (int k = 0; k < 3; ++k)
+      all[t][k] = vertices.row(triangles(t, k)).cast<double>().transpose();
     radii[t] = piece_radius(all[t]);
   }
   // Triangles much larger than the typical one are indexed as pieces (split at their
   // edge midpoints), so that the search bound below stays small; each piece answers
   // for its own triangle, so distances stay exact.
   std::vector<double> sorted = radii;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
+                   sorted.end());
   double target_radius = sorted.empty() ? 0.0 : 2.0 * std::max(sorted[sorted.size() / 2], 1e-12);
   std::vector<std::pair<std::array<Eigen::Vector3d, 3>, int32_t>> stack;
   for (size_t t = 0; t < all.size(); ++t) {
@@ -72,8 +74,8 @@ TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Trian
       index_->centroids.points.push_back((c[0] + c[1] + c[2]) / 3.0);
     }
   }
-  index_->candidate_count = std::min<size_t>(static_cast<size_t>(std::max(1, candidate_count)),
-                                             index_->corners.size());
+  index_->candidate_count =
+      std::min<size_t>(static_cast<size_t>(std::max(1, candidate_count)), index_->corners.size());
   index_->tree = std::make_unique<Index::Tree>(3, index_->centroids,
                                                nanoflann::KDTreeSingleIndexAdaptorParams(10));
   index_->tree->buildIndex();

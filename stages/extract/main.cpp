@@ -29,19 +29,26 @@ int main(int argc, char** argv) {
     hair::ExtractResult result = hair::extract_strands(std::move(hair_mesh), std::move(body_mesh),
                                                        params.extract, hair_path, body_path);
     const hair::ExtractStats& stats = result.stats;
-    spdlog::info("{} groups, {} strands, {} points; H = {:.3f} m; {} scalp triangles",
-                 result.group_count(), result.strands.strand_count(),
-                 result.strands.point_count(), result.head.head_height,
-                 std::count(result.scalp_triangle.begin(), result.scalp_triangle.end(), 1));
+    const auto scalp_triangles =
+        std::count(result.scalp_triangle.begin(), result.scalp_triangle.end(), 1);
+    spdlog::info("{}: {} groups, {} strands, {} points; H = {:.3f} m; {} scalp triangles",
+                 hair_path, result.group_count(), result.strands.strand_count(),
+                 result.strands.point_count(), result.head.head_height, scalp_triangles);
     spdlog::info(
-        "orientation rules: vertex_order {}, scalp_distance {}, continuation {}, uv {}, "
+        "{}: orientation rules: vertex_order {}, scalp_distance {}, continuation {}, uv {}, "
         "height {}, parting {}",
-        stats.groups_by_rule[0], stats.groups_by_rule[1], stats.groups_by_rule[2],
+        hair_path, stats.groups_by_rule[0], stats.groups_by_rule[1], stats.groups_by_rule[2],
         stats.groups_by_rule[3], stats.groups_by_rule[4], stats.groups_by_rule[5]);
-    spdlog::debug("{} degenerate faces removed, {} triangles paired, {} left, {} rails parted, "
-                  "{} fragments dropped",
-                  stats.degenerate_faces_removed, stats.triangles_paired, stats.triangles_left,
-                  stats.rails_parted, stats.fragments_dropped);
+    if (scalp_triangles == 0)
+      spdlog::warn(
+          "{}: the hair mesh does not reach the head of {}: no scalp (wrong body, or "
+          "unit_scale?)",
+          hair_path, body_path);
+    spdlog::debug(
+        "{} degenerate faces removed, {} triangles paired, {} left, {} rails parted, "
+        "{} fragments dropped",
+        stats.degenerate_faces_removed, stats.triangles_paired, stats.triangles_left,
+        stats.rails_parted, stats.fragments_dropped);
     if (result.head.head_height < 0.1 || result.head.head_height > 0.5)
       spdlog::warn("head height {:.3f} m is not a human head's: is unit_scale right?",
                    result.head.head_height);

@@ -50,7 +50,8 @@ inline PolyMesh snowman_body(int segments = 48) {
       for (int s = 0; s < segments; ++s) {
         double angle = 2 * std::numbers::pi * s / segments;
         part.vertices.row(r * segments + s) << static_cast<float>(profile[r].x() * std::cos(angle)),
-            static_cast<float>(profile[r].y()), static_cast<float>(profile[r].x() * std::sin(angle));
+            static_cast<float>(profile[r].y()),
+            static_cast<float>(profile[r].x() * std::sin(angle));
       }
     for (int r = 0; r + 1 < rings; ++r)
       for (int s = 0; s < segments; ++s) {
@@ -86,8 +87,9 @@ struct StripOptions {
 
 /// A strip of hair along the polyline `centre` (root first), `width` wide across the
 /// direction `across`; returns the mesh, whose rails run root to tip.
-inline PolyMesh hair_strip(const std::vector<Eigen::Vector3d>& centre, const Eigen::Vector3d& across,
-                           double width, const StripOptions& options) {
+inline PolyMesh hair_strip(const std::vector<Eigen::Vector3d>& centre,
+                           const Eigen::Vector3d& across, double width,
+                           const StripOptions& options) {
   int rows = static_cast<int>(centre.size());
   int columns = options.rails;
   int count = rows * columns;
@@ -102,7 +104,8 @@ inline PolyMesh hair_strip(const std::vector<Eigen::Vector3d>& centre, const Eig
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < columns; ++c) {
       double t = columns > 1 ? static_cast<double>(c) / (columns - 1) - 0.5 : 0.0;
-      strip.vertices.row(id[r * columns + c]) = (centre[r] + t * width * across).cast<float>().transpose();
+      strip.vertices.row(id[r * columns + c]) =
+          (centre[r] + t * width * across).cast<float>().transpose();
     }
   std::vector<float> uv;
   auto corner_uv = [&](int r, int c) {
@@ -128,15 +131,17 @@ inline PolyMesh hair_strip(const std::vector<Eigen::Vector3d>& centre, const Eig
       }
     }
   if (options.with_uv)
-    strip.corner_uv = Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
+    strip.corner_uv =
+        Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
   return strip;
 }
 
 /// A polyline from `root` along `direction` (normalised), `length` long, bending by
 /// `droop` towards -y along the way: hair leaving the scalp and falling.
 inline std::vector<Eigen::Vector3d> falling_polyline(const Eigen::Vector3d& root,
-                                                     const Eigen::Vector3d& direction, double length,
-                                                     int segments, double droop = 0.0) {
+                                                     const Eigen::Vector3d& direction,
+                                                     double length, int segments,
+                                                     double droop = 0.0) {
   std::vector<Eigen::Vector3d> points;
   Eigen::Vector3d d = direction.normalized();
   for (int i = 0; i <= segments; ++i) {

@@ -43,7 +43,8 @@ HangingHair hanging_hair() {
       {"long grid shuffled", {.rails = 6, .segments = 30, .shuffle_order = true, .seed = 6}},
   };
   for (size_t i = 0; i < variants.size(); ++i) {
-    double azimuth = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(variants.size());
+    double azimuth =
+        2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(variants.size());
     Eigen::Vector3d root = head_point(azimuth, 1.0);
     Eigen::Vector3d outward = (root - Eigen::Vector3d(0, 1.6, 0)).normalized();
     Eigen::Vector3d across = outward.cross(Eigen::Vector3d::UnitY()).normalized();
@@ -104,12 +105,14 @@ TEST(ExtractStrands, TriangulatedStripsArePairedBackIntoQuads) {
 TEST(ExtractStrands, StrandsKeepTheirSourceVerticesAndGroups) {
   HangingHair hair = hanging_hair();
   ExtractResult result = extract_strands(hair.mesh, snowman_body(), {}, "hair", "body");
-  const auto& source = std::get<std::vector<int32_t>>(result.strands.point_attributes.at("source_vertex"));
+  const auto& source =
+      std::get<std::vector<int32_t>>(result.strands.point_attributes.at("source_vertex"));
   const auto& group = std::get<std::vector<int32_t>>(result.strands.strand_attributes.at("group"));
   for (int64_t i = 0; i < result.strands.point_count(); ++i)
     ASSERT_TRUE(result.strands.points.row(i).isApprox(result.hair_mesh.vertices.row(source[i])));
   for (int64_t s = 0; s < result.strands.strand_count(); ++s)
-    EXPECT_TRUE(s >= result.group_first_strand[group[s]] && s < result.group_first_strand[group[s] + 1]);
+    EXPECT_TRUE(s >= result.group_first_strand[group[s]] &&
+                s < result.group_first_strand[group[s] + 1]);
 }
 
 TEST(ExtractStrands, CardDrapedOverTheCrownIsPartedAtItsTop) {
@@ -119,7 +122,8 @@ TEST(ExtractStrands, CardDrapedOverTheCrownIsPartedAtItsTop) {
     double t = i / 40.0;
     double polar = std::numbers::pi * (t - 0.5) * 1.1;  // -99 to +99 degrees over the top
     Eigen::Vector3d on_head(0.108 * std::sin(polar), 1.6 + 0.108 * std::cos(polar), 0);
-    if (std::abs(polar) > std::numbers::pi / 2) on_head.y() -= 0.3 * (std::abs(polar) - std::numbers::pi / 2);
+    if (std::abs(polar) > std::numbers::pi / 2)
+      on_head.y() -= 0.3 * (std::abs(polar) - std::numbers::pi / 2);
     centre.push_back(on_head);
   }
   // Hang the ends well off the head.
@@ -150,8 +154,10 @@ TEST(ExtractStrands, CapRunsIntoTheTailThatContinuesIt) {
   cap_centre.back() = band;
   PolyMesh mesh = hair_strip(cap_centre, Eigen::Vector3d::UnitX(), 0.05,
                              {.rails = 5, .segments = 20, .shuffle_order = true, .with_uv = false});
-  auto tail = falling_polyline(band + Eigen::Vector3d(0, 0, -0.003), Eigen::Vector3d(0, -1, -0.6), 0.3, 12);
-  testing::append_mesh(mesh, hair_strip(tail, Eigen::Vector3d::UnitX(), 0.03, {.rails = 3, .segments = 12, .with_uv = false}));
+  auto tail =
+      falling_polyline(band + Eigen::Vector3d(0, 0, -0.003), Eigen::Vector3d(0, -1, -0.6), 0.3, 12);
+  testing::append_mesh(mesh, hair_strip(tail, Eigen::Vector3d::UnitX(), 0.03,
+                                        {.rails = 3, .segments = 12, .with_uv = false}));
   ExtractResult result = extract_strands(mesh, snowman_body(), {}, "hair", "body");
   ASSERT_EQ(result.group_count(), 2);
   EXPECT_EQ(result.group_rule[0], OrientationRule::continuation);
@@ -172,7 +178,8 @@ TEST(ExtractStrands, MeasuresTheHeadAndMarksTheScalp) {
     if (!result.scalp_triangle[t]) continue;
     ++scalp;
     Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-    for (int k = 0; k < 3; ++k) centroid += result.body_vertices.row(result.body_triangles(t, k)).transpose() / 3;
+    for (int k = 0; k < 3; ++k)
+      centroid += result.body_vertices.row(result.body_triangles(t, k)).transpose() / 3;
     EXPECT_GE(centroid.y(), result.head.neck_y);  // on the head
   }
   EXPECT_GT(scalp, 0);
@@ -215,7 +222,10 @@ TEST(ExtractStrands, PatchWithoutQuadsGivesOneStrandAlongItsAxis) {
   Eigen::Vector3d root = head_point(0.3, 1.2);
   fan.vertices.row(0) = root.cast<float>().transpose();
   for (int i = 1; i < 7; ++i)
-    fan.vertices.row(i) = (root + Eigen::Vector3d(0.01 * std::cos(i), -0.05 * i, 0.01 * std::sin(i))).cast<float>().transpose();
+    fan.vertices.row(i) =
+        (root + Eigen::Vector3d(0.01 * std::cos(i), -0.05 * i, 0.01 * std::sin(i)))
+            .cast<float>()
+            .transpose();
   for (int32_t i = 1; i < 6; ++i) fan.append_face(std::vector<int32_t>{0, i, i + 1});
   ExtractParams params;
   params.max_quad_corner_deviation_deg = 5;

@@ -35,9 +35,11 @@ TEST(TriangleMeshDistance, MatchesBruteForceOnABody) {
 
 TEST(TriangleMeshDistance, ClosestPointOnTriangleRegions) {
   Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_TRUE(closest_point_on_triangle({0.2, 0.2, 5}, a, b, c).isApprox(Eigen::Vector3d(0.2, 0.2, 0)));
+  EXPECT_TRUE(
+      closest_point_on_triangle({0.2, 0.2, 5}, a, b, c).isApprox(Eigen::Vector3d(0.2, 0.2, 0)));
   EXPECT_TRUE(closest_point_on_triangle({-1, -1, 0}, a, b, c).isApprox(a));
-  EXPECT_TRUE(closest_point_on_triangle({0.5, -2, 0}, a, b, c).isApprox(Eigen::Vector3d(0.5, 0, 0)));
+  EXPECT_TRUE(
+      closest_point_on_triangle({0.5, -2, 0}, a, b, c).isApprox(Eigen::Vector3d(0.5, 0, 0)));
   EXPECT_TRUE(closest_point_on_triangle({1, 1, 0}, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
 }
 
@@ -45,15 +47,18 @@ TEST(PointIndex, NeighboursMatchBruteForceNearestFirst) {
   std::mt19937 random(3);
   std::uniform_real_distribution<float> unit(0, 1);
   Points3f points(500, 3);
-  for (Eigen::Index i = 0; i < points.rows(); ++i) points.row(i) << unit(random), unit(random), unit(random);
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    points.row(i) << unit(random), unit(random), unit(random);
   PointIndex index(points);
   Eigen::Vector3f query(0.5f, 0.5f, 0.5f);
   std::vector<int32_t> within = index.within(query, 0.2f);
   size_t brute = 0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) brute += (points.row(i).transpose() - query).norm() <= 0.2f;
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    brute += (points.row(i).transpose() - query).norm() <= 0.2f;
   EXPECT_EQ(within.size(), brute);
   for (size_t i = 1; i < within.size(); ++i)
-    EXPECT_LE((points.row(within[i - 1]).transpose() - query).norm(), (points.row(within[i]).transpose() - query).norm());
+    EXPECT_LE((points.row(within[i - 1]).transpose() - query).norm(),
+              (points.row(within[i]).transpose() - query).norm());
   std::vector<int32_t> nearest = index.nearest(query, 5);
   ASSERT_EQ(nearest.size(), 5u);
   EXPECT_EQ(nearest[0], within[0]);
@@ -67,17 +72,20 @@ TEST(DecideOrientation, RulesApplyInOrder) {
     return decide_orientation(e, thresholds, c);
   };
   // Ordered rails that agree, with the head distance agreeing: vertex order.
-  auto d = decide({.vertex_order_vote = 1, .has_ordered_rails = true, .scalp_distance_slope = 0.5}, std::nullopt);
+  auto d = decide({.vertex_order_vote = 1, .has_ordered_rails = true, .scalp_distance_slope = 0.5},
+                  std::nullopt);
   ASSERT_TRUE(d);
   EXPECT_EQ(d->rule, OrientationRule::vertex_order);
   EXPECT_FALSE(d->reverse);
   EXPECT_FLOAT_EQ(d->confidence, 1.0f);
   // Ordered rails contradicted by a decisive head distance: the distance wins.
-  d = decide({.vertex_order_vote = 1, .has_ordered_rails = true, .scalp_distance_slope = -0.5}, std::nullopt);
+  d = decide({.vertex_order_vote = 1, .has_ordered_rails = true, .scalp_distance_slope = -0.5},
+             std::nullopt);
   EXPECT_EQ(d->rule, OrientationRule::scalp_distance);
   EXPECT_TRUE(d->reverse);
   // Untrusted ids are ignored.
-  d = decide({.vertex_order_vote = -1, .has_ordered_rails = true}, MeshConventions{false, std::nullopt});
+  d = decide({.vertex_order_vote = -1, .has_ordered_rails = true},
+             MeshConventions{false, std::nullopt});
   EXPECT_EQ(d->rule, OrientationRule::height);
   // Nothing decisive: the first pass leaves it open, the second uses the texture...
   OrientationEvidence weak{.uv_growth = -0.9, .height_slope = 0.3};
@@ -92,8 +100,10 @@ TEST(DecideOrientation, RulesApplyInOrder) {
 }
 
 TEST(HeadMeasures, MakeHumanBodyHasAHumanHead) {
-  std::filesystem::path body_path = std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj";
-  if (!std::filesystem::exists(body_path)) body_path = std::filesystem::path(HAIR_SHARED_DATA_DIR) / "makehuman/body.obj";
+  std::filesystem::path body_path =
+      std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj";
+  if (!std::filesystem::exists(body_path))
+    body_path = std::filesystem::path(HAIR_SHARED_DATA_DIR) / "makehuman/body.obj";
   if (!std::filesystem::exists(body_path)) GTEST_SKIP() << "no MakeHuman body";
   PolyMesh body = read_mesh(body_path);
   body.vertices *= 0.1f;
@@ -119,7 +129,8 @@ namespace {
 
 TEST(TriangleMeshDistance, LargeTrianglesAmongSmallOnesStayExact) {
   // One huge triangle beside a fine strip: pieces of the big one must answer for it.
-  PolyMesh mesh = testing::hair_strip({{0, 0, 0}, {0, -0.01, 0}, {0, -0.02, 0}}, Eigen::Vector3d::UnitX(), 0.01, {});
+  PolyMesh mesh = testing::hair_strip({{0, 0, 0}, {0, -0.01, 0}, {0, -0.02, 0}},
+                                      Eigen::Vector3d::UnitX(), 0.01, {});
   PolyMesh big;
   big.vertices.resize(3, 3);
   big.vertices << 1, 0, 0, 3, 0, 0, 2, 2, 0;

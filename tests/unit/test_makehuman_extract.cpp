@@ -11,13 +11,16 @@
 namespace hair {
 namespace {
 
-std::filesystem::path makehuman_dir() { return std::filesystem::path(HAIR_SHARED_DATA_DIR) / "makehuman"; }
+std::filesystem::path makehuman_dir() {
+  return std::filesystem::path(HAIR_SHARED_DATA_DIR) / "makehuman";
+}
 
 ExtractResult extract_model(const std::string& model) {
   ExtractParams params;
   params.unit_scale = 0.1;
   std::filesystem::path hair = makehuman_dir() / "hair" / (model + ".obj");
-  return extract_strands(read_mesh(hair), read_mesh(makehuman_dir() / "body.obj"), params, hair.string(), "body.obj");
+  return extract_strands(read_mesh(hair), read_mesh(makehuman_dir() / "body.obj"), params,
+                         hair.string(), "body.obj");
 }
 
 class MakeHumanExtract : public ::testing::TestWithParam<std::pair<std::string, int>> {
@@ -33,8 +36,10 @@ TEST_P(MakeHumanExtract, OneGroupPerPatchAndValidStrands) {
   EXPECT_EQ(result.group_count(), patches);
   EXPECT_EQ(result.group_first_strand.back(), result.strands.strand_count());
   for (int32_t g = 0; g < result.group_count(); ++g)
-    EXPECT_GT(result.group_first_strand[g + 1], result.group_first_strand[g]) << model << " group " << g;
-  for (int64_t s = 0; s < result.strands.strand_count(); ++s) ASSERT_GE(result.strands.strand_size(s), 2);
+    EXPECT_GT(result.group_first_strand[g + 1], result.group_first_strand[g])
+        << model << " group " << g;
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s)
+    ASSERT_GE(result.strands.strand_size(s), 2);
   EXPECT_TRUE(result.strands.points.allFinite());
   EXPECT_GT(std::count(result.scalp_triangle.begin(), result.scalp_triangle.end(), 1), 500);
   EXPECT_NEAR(result.head.head_height, 0.242, 0.005);
@@ -73,7 +78,8 @@ TEST(MakeHumanOrientation, PonytailCapRunsIntoTheBand) {
   Eigen::Vector3f band = Eigen::Vector3f::Constant(-1);
   for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
     auto strand = result.strands.strand(s);
-    if (strand(strand.rows() - 1, 1) < result.head.neck_y && strand(0, 1) > band.y()) band = strand.row(0).transpose();
+    if (strand(strand.rows() - 1, 1) < result.head.neck_y && strand(0, 1) > band.y())
+      band = strand.row(0).transpose();
   }
   // Cap groups: wholly above the neck, and not parted (rails looping around the band).
   const auto& group = std::get<std::vector<int32_t>>(result.strands.strand_attributes.at("group"));
@@ -86,13 +92,16 @@ TEST(MakeHumanOrientation, PonytailCapRunsIntoTheBand) {
   for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
     if (!on_cap[group[s]]) continue;
     auto strand = result.strands.strand(s);
-    Eigen::Vector3f root = strand.row(0).transpose(), tip = strand.row(strand.rows() - 1).transpose();
-    if (std::abs((root - band).norm() - (tip - band).norm()) < 0.02f) continue;  // runs around the band
+    Eigen::Vector3f root = strand.row(0).transpose(),
+                    tip = strand.row(strand.rows() - 1).transpose();
+    if (std::abs((root - band).norm() - (tip - band).norm()) < 0.02f)
+      continue;  // runs around the band
     ++cap;
     into_band += (tip - band).norm() < (root - band).norm();
   }
   EXPECT_GT(cap, 20);
-  EXPECT_GE(static_cast<double>(into_band) / static_cast<double>(cap), 0.8) << into_band << " of " << cap;
+  EXPECT_GE(static_cast<double>(into_band) / static_cast<double>(cap), 0.8)
+      << into_band << " of " << cap;
 }
 
 }  // namespace

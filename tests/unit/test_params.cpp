@@ -1,12 +1,11 @@
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "file_test.h"
 #include "hair/error.h"
 #include "hair/params.h"
 
@@ -15,24 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// A temporary directory of its own per test, removed afterwards.
-class ParamsTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 (std::string("hair_params_") + info->name() + "_" + std::to_string(::getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  std::string write_file(const std::string& name, const std::string& text) {
-    const fs::path path = directory_ / name;
-    std::ofstream(path) << text;
-    return path.string();
-  }
-
-  fs::path directory_;
-};
+class ParamsTest : public hair::test::FileTest {};
 
 /// Parameters of a made-up stage, with one of each kind.
 struct ExampleParams {

@@ -81,7 +81,8 @@ TEST(PatchTopology, TubeHasClosedRingsAcross) {
   tube.vertices.resize(around * rows, 3);
   for (int r = 0; r < rows; ++r)
     for (int a = 0; a < around; ++a)
-      tube.vertices.row(r * around + a) << 0.02f * std::cos(a * 0.785f), -0.05f * r, 0.02f * std::sin(a * 0.785f);
+      tube.vertices.row(r * around + a) << 0.02f * std::cos(a * 0.785f), -0.05f * r,
+          0.02f * std::sin(a * 0.785f);
   for (int32_t r = 0; r + 1 < rows; ++r)
     for (int32_t a = 0; a < around; ++a) {
       int32_t p = r * around + a, q = r * around + (a + 1) % around;
@@ -104,9 +105,11 @@ TEST(PatchTopology, PoleIsCountedAndChainsStopThere) {
   cap.vertices.row(0) << 0, 0, 0;
   for (int i = 0; i < 10; ++i) {
     double angle = 2 * std::numbers::pi * i / 10, radius = i % 2 ? 0.8 : 1.0;
-    cap.vertices.row(1 + i) << static_cast<float>(radius * std::cos(angle)), 0, static_cast<float>(radius * std::sin(angle));
+    cap.vertices.row(1 + i) << static_cast<float>(radius * std::cos(angle)), 0,
+        static_cast<float>(radius * std::sin(angle));
   }
-  for (int32_t k = 0; k < 5; ++k) cap.append_face(std::vector<int32_t>{0, 1 + 2 * k, 2 + 2 * k, 1 + (2 * k + 2) % 10});
+  for (int32_t k = 0; k < 5; ++k)
+    cap.append_face(std::vector<int32_t>{0, 1 + 2 * k, 2 + 2 * k, 1 + (2 * k + 2) % 10});
   PatchTopology topology = patch_topology(cap, all_faces(cap));
   EXPECT_EQ(topology.interior_poles, 1);
   std::vector<int> along{0};
@@ -114,7 +117,8 @@ TEST(PatchTopology, PoleIsCountedAndChainsStopThere) {
 }
 
 TEST(QuadRecovery, TriangulatedGridPairsBackIntoItsQuads) {
-  PolyMesh triangles = hair_strip(straight(12), Eigen::Vector3d::UnitX(), 0.2, {.rails = 3, .triangulate = true});
+  PolyMesh triangles =
+      hair_strip(straight(12), Eigen::Vector3d::UnitX(), 0.2, {.rails = 3, .triangulate = true});
   ASSERT_EQ(triangles.face_count(), 48);
   QuadRecovery recovered = quads_from_triangles(triangles);
   EXPECT_EQ(recovered.mesh.face_count(), 24);

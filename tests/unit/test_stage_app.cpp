@@ -1,15 +1,14 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <spdlog/spdlog.h>
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "file_test.h"
 #include "hair/error.h"
 #include "hair/stage_app.h"
 
@@ -56,24 +55,7 @@ RunResult run_stage(
   return result;
 }
 
-class StageAppTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 (std::string("hair_stage_app_") + info->name() + "_" + std::to_string(::getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  std::string write_file(const std::string& name, const std::string& text) {
-    const fs::path path = directory_ / name;
-    std::ofstream(path) << text;
-    return path.string();
-  }
-
-  fs::path directory_;
-};
+class StageAppTest : public hair::test::FileTest {};
 
 TEST_F(StageAppTest, RunsTheBodyWithParsedOptions) {
   FakeStage stage;

@@ -10,15 +10,11 @@
 
 #include "hair/error.h"
 #include "hair/strand_geometry.h"
+#include "point_rows.h"
 
 namespace {
 
-hair::Points3f rows(std::initializer_list<std::array<float, 3>> points) {
-  hair::Points3f matrix(static_cast<Eigen::Index>(points.size()), 3);
-  Eigen::Index row = 0;
-  for (const auto& point : points) matrix.row(row++) << point[0], point[1], point[2];
-  return matrix;
-}
+using hair::test::rows;
 
 hair::StrandSet strand_set(std::initializer_list<hair::Points3f> strands) {
   hair::StrandSet set;

@@ -6,15 +6,11 @@
 
 #include "hair/error.h"
 #include "hair/strand_set.h"
+#include "point_rows.h"
 
 namespace {
 
-hair::Points3f rows(std::initializer_list<std::array<float, 3>> points) {
-  hair::Points3f matrix(static_cast<Eigen::Index>(points.size()), 3);
-  Eigen::Index row = 0;
-  for (const auto& point : points) matrix.row(row++) << point[0], point[1], point[2];
-  return matrix;
-}
+using hair::test::rows;
 
 /// Two strands (3 and 2 points) with one attribute of each kind.
 hair::StrandSet two_strands() {
@@ -110,7 +106,8 @@ TEST(StrandSetFromPolylines, MatchesAppendingOneByOne) {
   StrandSet appended;
   for (int s = 0; s < 5; ++s) {
     Points3f polyline(2 + s, 3);
-    for (int i = 0; i < polyline.rows(); ++i) polyline.row(i) << static_cast<float>(s), static_cast<float>(i), 0.5f;
+    for (int i = 0; i < polyline.rows(); ++i)
+      polyline.row(i) << static_cast<float>(s), static_cast<float>(i), 0.5f;
     polylines.push_back(polyline);
     appended.append_strand(polyline);
   }

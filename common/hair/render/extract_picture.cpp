@@ -13,8 +13,8 @@ namespace {
 
 /// Distinct colours (BGR) for categories, in the order of their enum values.
 const std::vector<cv::Vec3b>& category_colours() {
-  static const std::vector<cv::Vec3b> colours = {
-      {180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214}, {189, 103, 148}, {75, 86, 140}};
+  static const std::vector<cv::Vec3b> colours = {{180, 119, 31}, {14, 127, 255},  {44, 160, 44},
+                                                 {40, 39, 214},  {189, 103, 148}, {75, 86, 140}};
   return colours;
 }
 
@@ -59,18 +59,25 @@ cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
   PointColours colours;
   const h5::EnumMembers* legend = nullptr;
   switch (colouring) {
-    case ExtractColouring::group: colours = colours_by_id(strands, strand_group); break;
-    case ExtractColouring::direction: colours = colours_root_to_tip(strands); break;
+    case ExtractColouring::group:
+      colours = colours_by_id(strands, strand_group);
+      break;
+    case ExtractColouring::direction:
+      colours = colours_root_to_tip(strands);
+      break;
     case ExtractColouring::rule:
       legend = &orientation_rule_members();
       colours = colours_by_table(
-          strands, per_strand(h5::read_enum_dataset(file, "/groups/orientation_rule", *legend), strand_group),
+          strands,
+          per_strand(h5::read_enum_dataset(file, "/groups/orientation_rule", *legend),
+                     strand_group),
           category_colours());
       break;
     case ExtractColouring::kind:
       legend = &patch_kind_members();
       colours = colours_by_table(
-          strands, per_strand(h5::read_enum_dataset(file, "/groups/patch_kind", *legend), strand_group),
+          strands,
+          per_strand(h5::read_enum_dataset(file, "/groups/patch_kind", *legend), strand_group),
           category_colours());
       break;
   }

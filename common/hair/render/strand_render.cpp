@@ -19,10 +19,14 @@ struct ViewAxes {
 
 ViewAxes view_axes(ViewDirection view) {
   switch (view) {
-    case ViewDirection::front: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    case ViewDirection::side: return {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}};
-    case ViewDirection::back: return {{-1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-    case ViewDirection::top: return {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}};
+    case ViewDirection::front:
+      return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    case ViewDirection::side:
+      return {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}};
+    case ViewDirection::back:
+      return {{-1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+    case ViewDirection::top:
+      return {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}};
   }
   return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 }
@@ -68,7 +72,9 @@ void draw_body(const Points3f& vertices, const Triangles3i& triangles, const Pro
     screen[v] = projection(vertices.row(v).cast<double>().transpose());
   std::vector<std::pair<double, Eigen::Index>> order;
   for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
-    double z = (screen[triangles(t, 0)].z() + screen[triangles(t, 1)].z() + screen[triangles(t, 2)].z()) / 3;
+    double z =
+        (screen[triangles(t, 0)].z() + screen[triangles(t, 1)].z() + screen[triangles(t, 2)].z()) /
+        3;
     order.push_back({z, t});
   }
   std::sort(order.begin(), order.end());  // far to near: painter's order
@@ -98,7 +104,8 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
                        const Points3f& body_vertices, const Triangles3i& body_triangles,
                        const RenderOptions& options) {
   int size = options.view_size_px;
-  cv::Mat canvas(size, size * static_cast<int>(options.views.size()), CV_8UC3, cv::Scalar(255, 255, 255));
+  cv::Mat canvas(size, size * static_cast<int>(options.views.size()), CV_8UC3,
+                 cv::Scalar(255, 255, 255));
   const Points3f& frame_points =
       options.frame_on_strands && strands.point_count() > 0 ? strands.points : body_vertices;
   for (size_t view_index = 0; view_index < options.views.size(); ++view_index) {
@@ -124,17 +131,22 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
     for (auto [z, i] : segments) {
       Eigen::Vector3d middle = (screen[i] + screen[i + 1]) / 2;
       int px = static_cast<int>(middle.x()), py = static_cast<int>(middle.y());
-      if (px >= 0 && py >= 0 && px < size && py < size && depth.at<double>(py, px) > z + depth_tolerance_m)
+      if (px >= 0 && py >= 0 && px < size && py < size &&
+          depth.at<double>(py, px) > z + depth_tolerance_m)
         continue;
       // Long segments are drawn in pieces so that colours blend along them.
       Eigen::Vector2d from = screen[i].head<2>(), to = screen[i + 1].head<2>();
       int pieces = std::clamp(static_cast<int>((to - from).norm() / 6.0), 1, 16);
       for (int k = 0; k < pieces; ++k) {
         double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
-        cv::Vec3d blended = cv::Vec3d(colours[i]) * (1 - (t0 + t1) / 2) + cv::Vec3d(colours[i + 1]) * ((t0 + t1) / 2);
+        cv::Vec3d blended = cv::Vec3d(colours[i]) * (1 - (t0 + t1) / 2) +
+                            cv::Vec3d(colours[i + 1]) * ((t0 + t1) / 2);
         Eigen::Vector2d a = from + t0 * (to - from), b = from + t1 * (to - from);
-        cv::line(view, cv::Point(static_cast<int>(std::lround(a.x() * 16)), static_cast<int>(std::lround(a.y() * 16))),
-                 cv::Point(static_cast<int>(std::lround(b.x() * 16)), static_cast<int>(std::lround(b.y() * 16))),
+        cv::line(view,
+                 cv::Point(static_cast<int>(std::lround(a.x() * 16)),
+                           static_cast<int>(std::lround(a.y() * 16))),
+                 cv::Point(static_cast<int>(std::lround(b.x() * 16)),
+                           static_cast<int>(std::lround(b.y() * 16))),
                  cv::Scalar(blended[0], blended[1], blended[2]), thickness, cv::LINE_AA, 4);
       }
     }
@@ -166,7 +178,8 @@ PointColours colours_root_to_tip(const StrandSet& strands) {
     for (int64_t i = 0; i < n; ++i) {
       double t = n > 1 ? static_cast<double>(i) / static_cast<double>(n - 1) : 0.0;
       cv::Vec3d c = root * (1 - t) + tip * t;
-      colours[strands.offsets[s] + i] = cv::Vec3b(static_cast<uint8_t>(c[0]), static_cast<uint8_t>(c[1]), static_cast<uint8_t>(c[2]));
+      colours[strands.offsets[s] + i] = cv::Vec3b(
+          static_cast<uint8_t>(c[0]), static_cast<uint8_t>(c[1]), static_cast<uint8_t>(c[2]));
     }
   }
   return colours;
@@ -178,7 +191,8 @@ PointColours colours_by_table(const StrandSet& strands, const std::vector<int32_
   for (int64_t s = 0; s < strands.strand_count(); ++s) {
     int32_t value = strand_values[s];
     if (value < 0 || value >= static_cast<int32_t>(table.size())) continue;
-    std::fill(colours.begin() + strands.offsets[s], colours.begin() + strands.offsets[s + 1], table[value]);
+    std::fill(colours.begin() + strands.offsets[s], colours.begin() + strands.offsets[s + 1],
+              table[value]);
   }
   return colours;
 }

@@ -14,10 +14,9 @@ enum class ViewDirection { front, side, back, top };
 
 /// What to draw and how big.
 struct RenderOptions {
-  std::vector<ViewDirection> views{ViewDirection::front, ViewDirection::side,
-                                   ViewDirection::back};
-  int view_size_px = 512;        ///< each view is square
-  double margin = 0.08;          ///< empty border, as a share of the view
+  std::vector<ViewDirection> views{ViewDirection::front, ViewDirection::side, ViewDirection::back};
+  int view_size_px = 512;  ///< each view is square
+  double margin = 0.08;    ///< empty border, as a share of the view
   double line_width_px = 1.0;
   bool frame_on_strands = true;  ///< frame the views on the strands (else on the body)
   bool draw_body = true;         ///< draw the body (it still hides the strands behind it)
