@@ -46,8 +46,11 @@ TEST_F(H5InspectReportTest, NamedSchemaMustBeTheFilesAndKnown) {
             "plain.h5:/@schema: expected hairstyle.extract, found hairstyle.other");
   EXPECT_THROW(inspect_report(file, true, "hairstyle.nope"), Error);
   const InspectReport by_file = inspect_report(file, true);
-  EXPECT_EQ(*by_file.violation,
-            "plain.h5:/@schema: unknown schema 'hairstyle.other' (known: hairstyle.extract)");
+  // The known schemas are listed in name order; the list grows with schemas/.
+  const std::string expected_start =
+      "plain.h5:/@schema: unknown schema 'hairstyle.other' (known: hairstyle.extract";
+  EXPECT_EQ(by_file.violation->substr(0, expected_start.size()), expected_start);
+  EXPECT_EQ(by_file.violation->back(), ')');
 }
 
 }  // namespace
