@@ -1,0 +1,192 @@
+#include "hair/synth/synth_io.h"
+
+#include <fmt/format.h>
+
+#include <array>
+
+#include "hair/h5/attribute.h"
+#include "hair/h5/dataset.h"
+#include "hair/h5/enum_dataset.h"
+#include "hair/h5/schema.h"
+#include "hair/h5/schema_validation.h"
+#include "hair/h5/strand_set_io.h"
+
+namespace hair::synth {
+
+namespace {
+
+template <class Enum>
+std::vector<int8_t> enum_values(const std::vector<Enum>& values) {
+  std::vector<int8_t> raw;
+  raw.reserve(values.size());
+  for (Enum value : values) raw.push_back(static_cast<int8_t>(value));
+  return raw;
+}
+
+/// The members of an enum dataset, from the compiled-in schema (one place for names).
+const h5::EnumMembers& members(const std::string& path) {
+  return h5::Schema::find(kSynthTruthSchema).dataset(path).enum_members;
+}
+
+const char* kind_name(ComponentSpec::Kind kind) {
+  switch (kind) {
+    case ComponentSpec::Kind::normal:
+      return "normal";
+    case ComponentSpec::Kind::short_cards:
+      return "short_cards";
+    case ComponentSpec::Kind::ponytail:
+      return "ponytail";
+    case ComponentSpec::Kind::braid:
+      return "braid";
+  }
+  return "?";
+}
+
+}  // namespace
+
+const char* style_name(HairStyle style) {
+  switch (style) {
+    case HairStyle::normal:
+      return "normal";
+    case HairStyle::fixed:
+      return "fixed";
+    case HairStyle::short_hair:
+      return "short";
+    case HairStyle::braided:
+      return "braided";
+  }
+  return "?";
+}
+
+std::string obj_text(const SynthModel& model, double unit_scale) {
+  const PolyMesh& mesh = model.mesh;
+  std::string text = fmt::format(
+      "# hair-synth: preset {}, seed {}; {} patches, {} vertices, {} faces; units: {} m\n"
+      "# Truth: the .truth.h5 file beside this one (schemas/synth_truth.json).\n",
+      model.name, model.seed, model.patches.size(), mesh.vertex_count(), mesh.face_count(),
+      unit_scale);
+  text.reserve(static_cast<size_t>(mesh.vertex_count()) * 40 + mesh.face_vertices.size() * 40);
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
+    text += fmt::format("v {:.6f} {:.6f} {:.6f}\n", mesh.vertices(v, 0) / unit_scale,
+                        mesh.vertices(v, 1) / unit_scale, mesh.vertices(v, 2) / unit_scale);
+  for (Eigen::Index c = 0; c < mesh.corner_uv.rows(); ++c)
+    text += fmt::format("vt {:.6f} {:.6f}\n", mesh.corner_uv(c, 0), mesh.corner_uv(c, 1));
+  for (size_t p = 0; p < model.patches.size(); ++p) {
+    const SynthPatch& patch = model.patches[p];
+    text += fmt::format("g patch{}\n", p);
+    for (int64_t f = patch.first_face; f < patch.first_face + patch.face_count; ++f) {
+      text += "f";
+      for (int64_t corner = mesh.face_offsets[static_cast<size_t>(f)];
+           corner < mesh.face_offsets[static_cast<size_t>(f) + 1]; ++corner)
+        text +=
+            fmt::format(" {}/{}", mesh.face_vertices[static_cast<size_t>(corner)] + 1, corner + 1);
+      text += "\n";
+    }
+  }
+  return text;
+}
+
+nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
+  nlohmann::ordered_json json;
+  json["name"] = spec.name;
+  json["components"] = nlohmann::ordered_json::array();
+  for (const ComponentSpec& c : spec.components) {
+    nlohmann::ordered_json item;
+    item["kind"] = kind_name(c.kind);
+    item["stream_count"] = c.stream_count;
+    item["length_min_m"] = c.length_min_m;
+    item["length_max_m"] = c.length_max_m;
+    item["wave_amplitude_m"] = c.wave_amplitude_m;
+    item["wavelength_m"] = c.wavelength_m;
+    item["strip_width_m"] = c.strip_width_m;
+    item["azimuth_min_deg"] = c.azimuth_min_deg;
+    item["azimuth_max_deg"] = c.azimuth_max_deg;
+    item["polar_min_deg"] = c.polar_min_deg;
+    item["polar_max_deg"] = c.polar_max_deg;
+    item["band_azimuth_deg"] = c.band_azimuth_deg;
+    item["band_polar_deg"] = c.band_polar_deg;
+    item["braid_width_m"] = c.braid_width_m;
+    item["braid_depth_m"] = c.braid_depth_m;
+    item["braid_period_m"] = c.braid_period_m;
+    item["band_gap_m"] = c.band_gap_m;
+    json["components"].push_back(item);
+  }
+  const DefectSpec& d = spec.defects;
+  json["defects"] = {{"rails_min", d.rails_min},
+                     {"rails_max", d.rails_max},
+                     {"cap_rails", d.cap_rails},
+                     {"segment_length_m", d.segment_length_m},
+                     {"normal_pieces_max", d.normal_pieces_max},
+                     {"braid_piece_length_m", d.braid_piece_length_m},
+                     {"gap_m", d.gap_m},
+                     {"overlap_share", d.overlap_share},
+                     {"overlap_m", d.overlap_m},
+                     {"jitter_m", d.jitter_m},
+                     {"triangulate_share", d.triangulate_share},
+                     {"reversed_share", d.reversed_share},
+                     {"shuffled_share", d.shuffled_share},
+                     {"scalp_lift_m", d.scalp_lift_m},
+                     {"body_clearance_m", d.body_clearance_m}};
+  return json;
+}
+
+void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale,
+                      const std::string& mesh_file_name) {
+  h5::write_schema_attributes(file, h5::Schema::find(kSynthTruthSchema));
+  h5::write_string_attribute(file, "/", "unit", "m");
+  h5::write_string_attribute(file, "/", "up_axis", "+Y");
+  h5::write_double_attribute(file, "/", "unit_scale", unit_scale);
+  h5::write_string_attribute(file, "/", "mesh_file", mesh_file_name);
+  h5::write_string_attribute(file, "/", "preset", model.name);
+  h5::write_int64_attribute(file, "/", "seed", model.seed);
+
+  std::vector<int32_t> stream, index_in_stream, rails;
+  std::vector<GroupType> type;
+  std::vector<HairStyle> style;
+  std::vector<VertexOrder> order;
+  std::vector<uint8_t> triangulated;
+  std::vector<int64_t> first_vertex{0}, first_face{0};
+  Eigen::Matrix<float, Eigen::Dynamic, 2, Eigen::RowMajor> along(
+      static_cast<Eigen::Index>(model.patches.size()), 2);
+  for (size_t p = 0; p < model.patches.size(); ++p) {
+    const SynthPatch& patch = model.patches[p];
+    stream.push_back(patch.stream);
+    index_in_stream.push_back(patch.index_in_stream);
+    rails.push_back(patch.rails);
+    type.push_back(patch.type);
+    style.push_back(patch.style);
+    order.push_back(patch.order);
+    triangulated.push_back(patch.triangulated ? 1 : 0);
+    first_vertex.push_back(patch.first_vertex + patch.vertex_count);
+    first_face.push_back(patch.first_face + patch.face_count);
+    along(static_cast<Eigen::Index>(p), 0) = static_cast<float>(patch.start_m);
+    along(static_cast<Eigen::Index>(p), 1) = static_cast<float>(patch.end_m);
+  }
+  h5::write_vector(file, "/patches/stream", stream);
+  h5::write_vector(file, "/patches/index_in_stream", index_in_stream);
+  h5::write_enum_dataset(file, "/patches/group_type", enum_values(type),
+                         members("/patches/group_type"));
+  h5::write_enum_dataset(file, "/patches/style", enum_values(style), members("/patches/style"));
+  h5::write_enum_dataset(file, "/patches/vertex_order", enum_values(order),
+                         members("/patches/vertex_order"));
+  h5::write_vector(file, "/patches/triangulated", triangulated);
+  h5::write_vector(file, "/patches/rails", rails);
+  h5::write_vector(file, "/patches/first_vertex", first_vertex);
+  h5::write_vector(file, "/patches/first_face", first_face);
+  h5::write_matrix(file, "/patches/along_range", along);
+  h5::write_vector(file, "/mesh/vertex_along", model.vertex_along_m);
+
+  h5::write_strand_set(file, "/streams/centre", model.stream_centres);
+  h5::write_enum_dataset(file, "/streams/style", enum_values(model.stream_style),
+                         members("/streams/style"));
+  h5::write_vector(file, "/streams/component", model.stream_component);
+  h5::write_strand_set(file, "/strands", model.strands);
+}
+
+std::array<int, 4> streams_by_style(const SynthModel& model) {
+  std::array<int, 4> counts{};
+  for (HairStyle style : model.stream_style) ++counts[static_cast<size_t>(style)];
+  return counts;
+}
+
+}  // namespace hair::synth

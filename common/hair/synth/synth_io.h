@@ -1,0 +1,33 @@
+#pragma once
+// Writing a synthetic hairstyle (synth_model.h): the mesh as Wavefront OBJ in source
+// units, its truth as HDF5 (schemas/synth_truth.json).
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "hair/h5/file.h"
+#include "hair/synth/synth_model.h"
+
+namespace hair::synth {
+
+/// Name of the truth file's schema.
+inline constexpr const char* kSynthTruthSchema = "hairstyle.synth_truth";
+
+/// The mesh as OBJ text: `v` in source units (metres / unit_scale) in the mesh's vertex
+/// order, one `vt` per face corner, `f v/vt`; a `g` line before each patch.
+std::string obj_text(const SynthModel& model, double unit_scale);
+
+/// The specification as JSON (the truth file's `parameters` attribute and the manifest).
+nlohmann::ordered_json spec_json(const HairStyleSpec& spec);
+
+/// Writes every dataset and attribute of the truth file but the provenance ones.
+void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale,
+                      const std::string& mesh_file_name);
+
+/// Streams of the model per style: {normal, fixed, short, braided}.
+std::array<int, 4> streams_by_style(const SynthModel& model);
+
+/// The truth's word for a style ("normal", "fixed", "short", "braided").
+const char* style_name(HairStyle style);
+
+}  // namespace hair::synth

@@ -1,0 +1,796 @@
+#include "hair/synth/synth_model.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <random>
+
+#include "hair/body_measures.h"
+#include "hair/error.h"
+#include "hair/triangle_mesh_distance.h"
+
+namespace hair::synth {
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+constexpr double kPi = std::numbers::pi;
+constexpr double kStep_m = 0.004;  // spacing of centre-curve points
+
+/// Random numbers from std::mt19937, whose output the standard fixes, with the
+/// distributions written out here (the standard library's are implementation-defined),
+/// so that a seed gives the same model everywhere.
+class Rng {
+ public:
+  explicit Rng(uint32_t seed) : engine_(seed) {}
+  /// Uniform in [lo, hi).
+  double uniform(double lo, double hi) {
+    return lo + (hi - lo) * (static_cast<double>(engine_()) / 4294967296.0);
+  }
+  /// Uniform integer in [lo, hi].
+  int integer(int lo, int hi) {
+    if (hi <= lo) return lo;
+    return lo + static_cast<int>(engine_() % static_cast<uint32_t>(hi - lo + 1));
+  }
+  bool chance(double probability) { return uniform(0, 1) < probability; }
+  /// Fisher-Yates shuffle.
+  template <class T>
+  void shuffle(std::vector<T>& values) {
+    for (size_t i = values.size(); i > 1; --i)
+      std::swap(values[i - 1], values[static_cast<size_t>(integer(0, static_cast<int>(i) - 1))]);
+  }
+
+ private:
+  std::mt19937 engine_;
+};
+
+double radians(double degrees) { return degrees * kPi / 180.0; }
+
+/// Unit direction at `azimuth_deg` around +Y from +Z (the face) towards +X and
+/// `polar_deg` from +Y.
+Vec3 direction(double azimuth_deg, double polar_deg) {
+  double azimuth = radians(azimuth_deg), polar = radians(polar_deg);
+  return {std::sin(polar) * std::sin(azimuth), std::cos(polar),
+          std::sin(polar) * std::cos(azimuth)};
+}
+
+/// Polar angle of the front hairline at an azimuth: high on the forehead, low at the nape.
+double hairline_polar_deg(double azimuth_deg) {
+  return 45.0 + 70.0 * std::pow(std::abs(azimuth_deg) / 180.0, 0.8);
+}
+
+/// The body and its head, for placing roots and keeping hair off the body.
+struct Head {
+  Vec3 centre = Vec3::Zero();
+  double radius_m = 0.1;
+  TriangleMeshDistance body;
+
+  /// The head surface in direction `dir` from the centre, and the outward normal there.
+  std::pair<Vec3, Vec3> surface(const Vec3& dir) const {
+    Vec3 probe = centre + dir.normalized() * 2.0 * radius_m;
+    auto nearest = body.nearest(probe);
+    Vec3 outward = (probe - nearest.closest_point).normalized();
+    return {nearest.closest_point, outward};
+  }
+
+  /// `point` moved out to `clearance_m` off the body if it is nearer.
+  Vec3 pushed_out(const Vec3& point, double clearance_m) const {
+    auto nearest = body.nearest(point);
+    if (nearest.distance >= clearance_m || nearest.distance <= 0) return point;
+    return nearest.closest_point +
+           (point - nearest.closest_point) * (clearance_m / nearest.distance);
+  }
+
+  /// Direction away from the head's vertical axis (below the centre) or its centre.
+  Vec3 radial(const Vec3& point) const {
+    Vec3 r = point - centre;
+    if (point.y() < centre.y()) r.y() = 0;
+    if (r.norm() < 1e-9) r = Vec3::UnitZ();
+    return r.normalized();
+  }
+};
+
+Head measure_head(const PolyMesh& body_m) {
+  HeadMeasures measures = head_measures(body_m, "body");
+  Triangles3i triangles = fan_triangulation(body_m.face_offsets, body_m.face_vertices);
+  Head head{Vec3::Zero(), 0.5 * measures.head_width,
+            TriangleMeshDistance(body_m.vertices, triangles)};
+  Eigen::Vector3d low = Vec3::Constant(1e9), high = Vec3::Constant(-1e9);
+  double floor_y = measures.neck_y + 0.35 * measures.head_height;
+  for (Eigen::Index v = 0; v < body_m.vertices.rows(); ++v) {
+    Vec3 p = body_m.vertices.row(v).cast<double>().transpose();
+    if (p.y() < floor_y) continue;
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  head.radius_m = 0.5 * (high.x() - low.x());
+  head.centre = {0.5 * (low.x() + high.x()), measures.head_top_y - head.radius_m,
+                 0.5 * (low.z() + high.z())};
+  return head;
+}
+
+/// A part of a stream that becomes one patch.
+struct Piece {
+  double start_m = 0, end_m = 0;
+  HairStyle style = HairStyle::normal;
+  int rails = 2;
+};
+
+/// A stream: a centre curve with a frame and a width at every point, and its pieces.
+struct Stream {
+  std::vector<Vec3> points;
+  std::vector<double> along_m;  // arc length
+  std::vector<Vec3> across;     // unit, across the strip
+  std::vector<Vec3> normal;     // unit, out of the strip
+  std::vector<double> width_m;
+  std::vector<Piece> pieces;
+  HairStyle style = HairStyle::normal;
+  int component = 0;
+  bool trim_tips = true;  // true strands end at slightly different lengths
+
+  double length_m() const { return along_m.back(); }
+
+  /// Index i with along_m[i] <= s < along_m[i+1] and the weight of point i + 1.
+  std::pair<size_t, double> locate(double s) const {
+    s = std::clamp(s, 0.0, length_m());
+    size_t i =
+        static_cast<size_t>(std::upper_bound(along_m.begin(), along_m.end(), s) - along_m.begin());
+    i = std::clamp<size_t>(i, 1, along_m.size() - 1) - 1;
+    double span = along_m[i + 1] - along_m[i];
+    return {i, span > 0 ? (s - along_m[i]) / span : 0.0};
+  }
+  Vec3 point_at(double s) const {
+    auto [i, w] = locate(s);
+    return (1 - w) * points[i] + w * points[i + 1];
+  }
+  Vec3 across_at(double s) const {
+    auto [i, w] = locate(s);
+    return ((1 - w) * across[i] + w * across[i + 1]).normalized();
+  }
+  Vec3 normal_at(double s) const {
+    auto [i, w] = locate(s);
+    return ((1 - w) * normal[i] + w * normal[i + 1]).normalized();
+  }
+  double width_at(double s) const {
+    auto [i, w] = locate(s);
+    return (1 - w) * width_m[i] + w * width_m[i + 1];
+  }
+};
+
+void measure_arc_length(Stream& stream) {
+  stream.along_m.assign(stream.points.size(), 0.0);
+  for (size_t i = 1; i < stream.points.size(); ++i)
+    stream.along_m[i] = stream.along_m[i - 1] + (stream.points[i] - stream.points[i - 1]).norm();
+}
+
+/// Frames along the curve: across = tangent x radial (the strip lies on the head's
+/// surface, or flat around its vertical axis below it), unless `axis_normal` gives
+/// the normal to keep facing (braid pieces facing out of the braid).
+void frame_stream(Stream& stream, const Head& head,
+                  const std::vector<Vec3>* axis_normal = nullptr) {
+  size_t n = stream.points.size();
+  stream.across.resize(n);
+  stream.normal.resize(n);
+  Vec3 previous_across = Vec3::UnitX();
+  for (size_t i = 0; i < n; ++i) {
+    Vec3 tangent = stream.points[std::min(i + 1, n - 1)] - stream.points[i > 0 ? i - 1 : 0];
+    tangent.normalize();
+    Vec3 out = axis_normal ? (*axis_normal)[i] : head.radial(stream.points[i]);
+    Vec3 across = tangent.cross(out);
+    if (across.norm() < 1e-6) across = previous_across;
+    across.normalize();
+    if (across.dot(previous_across) < 0 && i > 0) across = -across;
+    stream.across[i] = across;
+    stream.normal[i] = across.cross(tangent).normalized();
+    previous_across = across;
+  }
+}
+
+/// A hair grown from `root` in direction `start` for `length_m`: bending down under
+/// gravity (radius of the bend about `bend_m`) and kept `clearance_m` off the body.
+std::vector<Vec3> grown_curve(const Head& head, const Vec3& root, const Vec3& start,
+                              double length_m, double bend_m, double clearance_m,
+                              bool hug_scalp = false) {
+  std::vector<Vec3> points{root};
+  Vec3 dir = start.normalized();
+  Vec3 p = root;
+  int steps = std::max(2, static_cast<int>(std::ceil(length_m / kStep_m)));
+  double step = length_m / steps;
+  for (int i = 0; i < steps; ++i) {
+    dir = (dir + (step / bend_m) * Vec3(0, -1, 0)).normalized();
+    Vec3 next = head.pushed_out(p + step * dir, clearance_m);
+    if (hug_scalp && next.y() > head.centre.y() - 0.2 * head.radius_m) {
+      // Over the head, hair lies on the scalp (held by the hair under it) until it
+      // falls off the head's sides and back.
+      auto nearest = head.body.nearest(next);
+      if (nearest.distance > clearance_m && nearest.distance > 0)
+        next = nearest.closest_point +
+               (next - nearest.closest_point) * (clearance_m / nearest.distance);
+    }
+    // Keep the step length: a push changes the direction, not the speed.
+    Vec3 moved = next - p;
+    if (moved.norm() > 1e-9) {
+      dir = moved.normalized();
+      next = p + step * dir;
+    }
+    p = next;
+    points.push_back(p);
+  }
+  // Three passes of Laplacian smoothing, roots fixed, then pushed out again.
+  for (int pass = 0; pass < 3; ++pass)
+    for (size_t i = 1; i + 1 < points.size(); ++i)
+      points[i] =
+          head.pushed_out(0.5 * points[i] + 0.25 * (points[i - 1] + points[i + 1]), clearance_m);
+  return points;
+}
+
+/// Adds waves across the strip (amplitude fading in over the first 3 cm).
+void add_waves(Stream& stream, double amplitude_m, double wavelength_m, double phase) {
+  if (amplitude_m <= 0) return;
+  for (size_t i = 0; i < stream.points.size(); ++i) {
+    double s = stream.along_m[i];
+    double fade = std::min(1.0, s / 0.03);
+    stream.points[i] +=
+        fade * amplitude_m * std::sin(2 * kPi * s / wavelength_m + phase) * stream.across[i];
+  }
+}
+
+/// Root directions spread evenly (a Fibonacci lattice) over the component's scalp
+/// region below the hairline, jittered; `count` of them.
+std::vector<Vec3> root_directions(const ComponentSpec& component, int count, Rng& rng) {
+  auto in_region = [&](double azimuth_deg, double polar_deg) {
+    return azimuth_deg >= component.azimuth_min_deg && azimuth_deg <= component.azimuth_max_deg &&
+           polar_deg >= component.polar_min_deg && polar_deg <= component.polar_max_deg &&
+           polar_deg <= hairline_polar_deg(azimuth_deg);
+  };
+  const double golden_deg = 180.0 * (3.0 - std::sqrt(5.0));
+  auto lattice = [&](int size, std::vector<Vec3>* out) {
+    int found = 0;
+    for (int i = 0; i < size; ++i) {
+      double polar_deg = std::acos(1.0 - (2.0 * i + 1.0) / size) * 180.0 / kPi;
+      double azimuth_deg = std::fmod(i * golden_deg, 360.0);
+      if (azimuth_deg > 180.0) azimuth_deg -= 360.0;
+      if (!in_region(azimuth_deg, polar_deg)) continue;
+      ++found;
+      if (out) out->push_back(direction(azimuth_deg, polar_deg));
+    }
+    return found;
+  };
+  if (count <= 0) return {};
+  int size = count;
+  while (lattice(size, nullptr) < count && size < 200000) size += std::max(1, size / 50);
+  std::vector<Vec3> directions;
+  lattice(size, &directions);
+  directions.resize(std::min<size_t>(directions.size(), static_cast<size_t>(count)));
+  for (Vec3& d : directions) {
+    d += Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * 0.03;
+    d.normalize();
+  }
+  return directions;
+}
+
+/// Where hair from a root is combed: away from the crown and down, front roots
+/// combed back over the head.
+Vec3 comb_direction(const Head& head, const Vec3& root, const Vec3& outward) {
+  Vec3 wish;
+  Vec3 from_centre = root - head.centre;
+  if (from_centre.z() > 0.3 * head.radius_m)
+    wish = Vec3(0.0, 0.2, -1.0);
+  else
+    wish = Vec3(from_centre.x(), 0.0, from_centre.z()).normalized() + Vec3(0, -0.6, -0.3);
+  Vec3 tangent = wish - wish.dot(outward) * outward;
+  if (tangent.norm() < 1e-6) tangent = Vec3(0, 0, -1);
+  return (tangent.normalized() + 0.1 * outward).normalized();
+}
+
+/// Cuts [start, end] into `count` pieces with gaps (or overlaps) at the junctions.
+std::vector<Piece> cut_pieces(double start_m, double end_m, int count, HairStyle style,
+                              const DefectSpec& defects, Rng& rng) {
+  std::vector<Piece> pieces;
+  double length = end_m - start_m;
+  count = std::max(1, std::min(count, static_cast<int>(length / (4 * defects.segment_length_m))));
+  double begin = start_m;
+  for (int k = 0; k < count; ++k) {
+    Piece piece;
+    piece.style = style;
+    piece.rails = rng.integer(defects.rails_min, defects.rails_max);
+    piece.start_m = begin;
+    if (k + 1 == count) {
+      piece.end_m = end_m;
+    } else {
+      double junction = start_m + length * (k + 1) / count;
+      if (rng.chance(defects.overlap_share)) {
+        piece.end_m = junction + 0.5 * defects.overlap_m;
+        begin = junction - 0.5 * defects.overlap_m;
+      } else {
+        piece.end_m = junction - 0.5 * defects.gap_m;
+        begin = junction + 0.5 * defects.gap_m;
+      }
+    }
+    pieces.push_back(piece);
+  }
+  return pieces;
+}
+
+/// Normal or short hair: one stream per root, cut into strips or cards.
+void add_loose_streams(const ComponentSpec& component, int component_index,
+                       const DefectSpec& defects, const Head& head, Rng& rng,
+                       std::vector<Stream>& streams) {
+  bool is_short = component.kind == ComponentSpec::Kind::short_cards;
+  for (const Vec3& dir : root_directions(component, component.stream_count, rng)) {
+    auto [surface, outward] = head.surface(dir);
+    Vec3 root = surface + defects.scalp_lift_m * outward;
+    Vec3 start = comb_direction(head, root, outward);
+    if (is_short) start = (start + 0.8 * outward).normalized();
+    double length = rng.uniform(component.length_min_m, component.length_max_m);
+    Stream stream;
+    stream.component = component_index;
+    stream.style = is_short ? HairStyle::short_hair : HairStyle::normal;
+    stream.points = grown_curve(head, root, start, length, is_short ? 0.15 : 0.06,
+                                defects.body_clearance_m, !is_short);
+    measure_arc_length(stream);
+    frame_stream(stream, head);
+    add_waves(stream, component.wave_amplitude_m, component.wavelength_m, rng.uniform(0, 2 * kPi));
+    measure_arc_length(stream);
+    frame_stream(stream, head);
+    double width = component.strip_width_m * rng.uniform(0.8, 1.2);
+    stream.width_m.assign(stream.points.size(), width);
+    int pieces = is_short ? 1 : rng.integer(1, defects.normal_pieces_max);
+    stream.pieces = cut_pieces(0, stream.length_m(), pieces, stream.style, defects, rng);
+    streams.push_back(std::move(stream));
+  }
+}
+
+/// A curve over the head from `root` to `band`: directions from the head centre
+/// interpolated on the sphere, each put on the surface, lifted from `lift_root_m` at the
+/// root to the band's own height at the end.
+std::vector<Vec3> cap_curve(const Head& head, const Vec3& root_dir, const Vec3& band_end,
+                            double lift_root_m, double clearance_m) {
+  Vec3 band_dir = (band_end - head.centre).normalized();
+  double angle = std::acos(std::clamp(root_dir.normalized().dot(band_dir), -1.0, 1.0));
+  int steps = std::max(4, static_cast<int>(angle * head.radius_m / kStep_m));
+  std::vector<Vec3> points;
+  auto [band_surface, band_outward] = head.surface(band_dir);
+  double band_lift = (band_end - band_surface).norm();
+  for (int i = 0; i <= steps; ++i) {
+    double t = static_cast<double>(i) / steps;
+    Vec3 dir =
+        std::abs(std::sin(angle)) < 1e-6
+            ? root_dir
+            : (std::sin((1 - t) * angle) * root_dir.normalized() + std::sin(t * angle) * band_dir) /
+                  std::sin(angle);
+    auto [surface, outward] = head.surface(dir);
+    double lift = lift_root_m + (band_lift - lift_root_m) * t * t;
+    points.push_back(i == steps ? band_end
+                                : head.pushed_out(surface + lift * outward, clearance_m * 0.5));
+  }
+  return points;
+}
+
+/// Appends `tail` (its first point excluded when it repeats the last) to `points`.
+void append_points(std::vector<Vec3>& points, const std::vector<Vec3>& tail) {
+  for (const Vec3& p : tail)
+    if (points.empty() || (p - points.back()).norm() > 1e-9) points.push_back(p);
+}
+
+/// A band on the head: its point (lifted off the hair under it) and outward normal.
+std::pair<Vec3, Vec3> band_point(const Head& head, const ComponentSpec& component) {
+  auto [surface, outward] =
+      head.surface(direction(component.band_azimuth_deg, component.band_polar_deg));
+  return {surface + 0.012 * outward, outward};
+}
+
+/// A ponytail: cap grids from the hairline to a band (fixed), tail strips from the band
+/// (normal), one stream per cap patch, a hidden gap at the band.
+void add_ponytail(const ComponentSpec& component, int component_index, const DefectSpec& defects,
+                  const Head& head, Rng& rng, std::vector<Stream>& streams) {
+  auto [band, band_out] = band_point(head, component);
+  Vec3 side = band_out.cross(Vec3::UnitY()).normalized();
+  Vec3 up = side.cross(band_out).normalized();
+  std::vector<Vec3> directions = root_directions(component, component.stream_count, rng);
+  for (size_t k = 0; k < directions.size(); ++k) {
+    double ring_angle = 2 * kPi * static_cast<double>(k) / static_cast<double>(directions.size());
+    Vec3 cap_end = band + 0.006 * (std::cos(ring_angle) * side + std::sin(ring_angle) * up);
+    Stream stream;
+    stream.component = component_index;
+    stream.style = HairStyle::fixed;
+    stream.points =
+        cap_curve(head, directions[k], cap_end, defects.scalp_lift_m, defects.body_clearance_m);
+    measure_arc_length(stream);
+    double cap_length = stream.length_m();
+    double total = rng.uniform(component.length_min_m, component.length_max_m);
+    double tail_length = std::max(0.05, total - cap_length);
+    Vec3 tail_start = (band_out + 0.4 * Vec3(0, -1, 0)).normalized();
+    append_points(stream.points, grown_curve(head, cap_end, tail_start, tail_length, 0.05,
+                                             defects.body_clearance_m));
+    measure_arc_length(stream);
+    frame_stream(stream, head);
+    double root_width = component.strip_width_m * rng.uniform(0.8, 1.2);
+    double tail_width = 0.015 * rng.uniform(0.8, 1.2);
+    stream.width_m.resize(stream.points.size());
+    for (size_t i = 0; i < stream.points.size(); ++i) {
+      double s = stream.along_m[i];
+      stream.width_m[i] =
+          s < cap_length ? root_width + (0.008 - root_width) * (s / cap_length) : tail_width;
+    }
+    Piece cap{0.0, cap_length, HairStyle::fixed, defects.cap_rails};
+    stream.pieces.push_back(cap);
+    double tail_begin = cap_length + component.band_gap_m;
+    if (tail_begin < stream.length_m() - 2 * defects.segment_length_m) {
+      auto tail =
+          cut_pieces(tail_begin, stream.length_m(), rng.integer(1, defects.normal_pieces_max),
+                     HairStyle::normal, defects, rng);
+      stream.pieces.insert(stream.pieces.end(), tail.begin(), tail.end());
+    }
+    streams.push_back(std::move(stream));
+  }
+}
+
+/// A braid: three streams, each a cap grid from a third of the scalp region to the braid
+/// top (fixed), then many short pieces along a stream interleaving with the other two
+/// around a hanging axis (braided): offsets a sin(wt + phi_k) across and b sin(2(wt +
+/// phi_k)) out of the braid, phi_k = 2 pi k / 3, the classic parametric three-strand braid.
+void add_braid(const ComponentSpec& component, int component_index, const DefectSpec& defects,
+               const Head& head, Rng& rng, std::vector<Stream>& streams) {
+  auto [top, top_out] = band_point(head, component);
+  double length = rng.uniform(component.length_min_m, component.length_max_m);
+  std::vector<Vec3> axis =
+      grown_curve(head, top, (top_out + 0.8 * Vec3(0, -1, 0)).normalized(), length, 0.05,
+                  defects.body_clearance_m + component.braid_depth_m);
+  std::vector<double> axis_along(axis.size(), 0.0);
+  for (size_t i = 1; i < axis.size(); ++i)
+    axis_along[i] = axis_along[i - 1] + (axis[i] - axis[i - 1]).norm();
+  // Frame of the axis: out of the braid (away from the head) and across it.
+  std::vector<Vec3> axis_out(axis.size()), axis_side(axis.size());
+  for (size_t i = 0; i < axis.size(); ++i) {
+    Vec3 tangent = (axis[std::min(i + 1, axis.size() - 1)] - axis[i > 0 ? i - 1 : 0]).normalized();
+    Vec3 out = head.radial(axis[i]);
+    Vec3 side = tangent.cross(out).normalized();
+    axis_side[i] = side;
+    axis_out[i] = side.cross(tangent).normalized();
+  }
+  double sector = (component.azimuth_max_deg - component.azimuth_min_deg) / 3.0;
+  double omega = 2 * kPi / component.braid_period_m;
+  for (int k = 0; k < 3; ++k) {
+    double phase = 2 * kPi * k / 3.0;
+    std::vector<Vec3> braid_points, braid_out;
+    for (size_t i = 0; i < axis.size(); ++i) {
+      double t = omega * axis_along[i] + phase;
+      braid_points.push_back(axis[i] + component.braid_width_m * std::sin(t) * axis_side[i] +
+                             component.braid_depth_m * std::sin(2 * t) * axis_out[i]);
+      braid_out.push_back(axis_out[i]);
+    }
+    double azimuth = component.azimuth_min_deg + sector * (k + 0.5);
+    double polar = std::min(component.polar_max_deg, hairline_polar_deg(azimuth)) - 8.0;
+    Vec3 root_dir = direction(azimuth, polar);
+    Stream stream;
+    stream.component = component_index;
+    stream.style = HairStyle::braided;
+    stream.points = cap_curve(head, root_dir, braid_points.front(), defects.scalp_lift_m,
+                              defects.body_clearance_m);
+    size_t cap_points = stream.points.size();
+    append_points(stream.points, braid_points);
+    measure_arc_length(stream);
+    double cap_length = stream.along_m[cap_points - 1];
+    // Cap points face out of the head; braid points face out of the braid.
+    std::vector<Vec3> facing;
+    for (size_t i = 0; i < stream.points.size(); ++i)
+      facing.push_back(i < cap_points
+                           ? head.radial(stream.points[i])
+                           : braid_out[std::min(i - cap_points + 1, braid_out.size() - 1)]);
+    frame_stream(stream, head, &facing);
+    double root_width = std::min(0.12, radians(sector) * head.radius_m * 0.8);
+    stream.width_m.resize(stream.points.size());
+    for (size_t i = 0; i < stream.points.size(); ++i) {
+      double s = stream.along_m[i];
+      stream.width_m[i] =
+          s < cap_length ? root_width + (component.strip_width_m - root_width) * (s / cap_length)
+                         : component.strip_width_m;
+    }
+    stream.trim_tips = false;
+    stream.pieces.push_back(Piece{0.0, cap_length, HairStyle::fixed, defects.cap_rails});
+    double braid_begin = cap_length + component.band_gap_m;
+    int count = std::max(
+        1, static_cast<int>((stream.length_m() - braid_begin) / defects.braid_piece_length_m));
+    DefectSpec braid_defects = defects;
+    braid_defects.segment_length_m =
+        std::min(defects.segment_length_m, defects.braid_piece_length_m / 4);
+    auto pieces =
+        cut_pieces(braid_begin, stream.length_m(), count, HairStyle::braided, braid_defects, rng);
+    for (Piece& piece : pieces) piece.rails = rng.integer(2, std::min(3, defects.rails_max));
+    stream.pieces.insert(stream.pieces.end(), pieces.begin(), pieces.end());
+    streams.push_back(std::move(stream));
+  }
+}
+
+/// The patch of `piece`: rows along the stream, `piece.rails` points across; returns
+/// the patch and appends its vertices, faces and UVs to `mesh`.
+SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpec& defects,
+                       Rng& rng, PolyMesh& mesh, std::vector<float>& uv,
+                       std::vector<float>& vertex_along_m) {
+  SynthPatch patch;
+  patch.style = piece.style;
+  patch.rails = std::max(2, piece.rails);
+  patch.start_m = piece.start_m;
+  patch.end_m = piece.end_m;
+  int columns = patch.rails;
+  int rows = std::max(
+      2,
+      static_cast<int>(std::lround((piece.end_m - piece.start_m) / defects.segment_length_m)) + 1);
+  int count = rows * columns;
+  double draw = rng.uniform(0, 1);
+  patch.order = draw < defects.reversed_share                            ? VertexOrder::reversed
+                : draw < defects.reversed_share + defects.shuffled_share ? VertexOrder::shuffled
+                                                                         : VertexOrder::natural;
+  patch.triangulated = rng.chance(defects.triangulate_share);
+  std::vector<int32_t> id(static_cast<size_t>(count));  // natural index -> id in patch
+  std::iota(id.begin(), id.end(), 0);
+  if (patch.order == VertexOrder::reversed)
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < columns; ++c) id[r * columns + c] = (rows - 1 - r) * columns + c;
+  if (patch.order == VertexOrder::shuffled) rng.shuffle(id);
+
+  auto base = static_cast<int32_t>(mesh.vertex_count());
+  patch.first_vertex = base;
+  patch.vertex_count = count;
+  patch.first_face = mesh.face_count();
+  Points3f vertices(mesh.vertex_count() + count, 3);
+  vertices.topRows(mesh.vertex_count()) = mesh.vertices;
+  vertex_along_m.resize(static_cast<size_t>(base + count));
+  for (int r = 0; r < rows; ++r) {
+    double s = piece.start_m + (piece.end_m - piece.start_m) * r / (rows - 1);
+    Vec3 centre = stream.point_at(s), across = stream.across_at(s);
+    double width = stream.width_at(s);
+    for (int c = 0; c < columns; ++c) {
+      double u = static_cast<double>(c) / (columns - 1) - 0.5;
+      Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      Vec3 p = centre + u * width * across + defects.jitter_m * jitter;
+      int32_t v = base + id[static_cast<size_t>(r * columns + c)];
+      vertices.row(v) = p.cast<float>().transpose();
+      vertex_along_m[static_cast<size_t>(v)] = static_cast<float>(s);
+    }
+  }
+  mesh.vertices = std::move(vertices);
+  auto corner = [&](int r, int c) {
+    uv.push_back(static_cast<float>(c) / static_cast<float>(columns - 1));
+    uv.push_back(static_cast<float>(r) / static_cast<float>(rows - 1));
+    return base + id[static_cast<size_t>(r * columns + c)];
+  };
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int c = 0; c + 1 < columns; ++c) {
+      if (patch.triangulated) {
+        std::vector<int32_t> first{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1)};
+        mesh.append_face(first);
+        std::vector<int32_t> second{corner(r, c), corner(r + 1, c + 1), corner(r + 1, c)};
+        mesh.append_face(second);
+      } else {
+        std::vector<int32_t> quad{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1),
+                                  corner(r + 1, c)};
+        mesh.append_face(quad);
+      }
+    }
+  patch.face_count = mesh.face_count() - patch.first_face;
+  return patch;
+}
+
+/// Dense true strands of a stream: `count` strands at fixed places across the stream's
+/// width and thickness (a third of its width), following its centre.
+void add_true_strands(const Stream& stream, int32_t stream_id, int count, Rng& rng,
+                      std::vector<Points3f>& polylines, std::vector<int32_t>& strand_stream) {
+  for (int j = 0; j < count; ++j) {
+    double u = rng.uniform(-0.5, 0.5), v = rng.uniform(-0.5, 0.5) / 3.0;
+    double end = stream.length_m() * (stream.trim_tips ? rng.uniform(0.9, 1.0) : 1.0);
+    std::vector<Vec3> points;
+    for (size_t i = 0; i < stream.points.size() && stream.along_m[i] <= end; ++i)
+      points.push_back(stream.points[i] + u * stream.width_m[i] * stream.across[i] +
+                       v * stream.width_m[i] * stream.normal[i]);
+    if (points.size() < 2) continue;
+    Points3f polyline(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i)
+      polyline.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
+    polylines.push_back(std::move(polyline));
+    strand_stream.push_back(stream_id);
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& preset_names() {
+  static const std::vector<std::string> names = {
+      "long_straight", "long_wavy", "medium_straight", "medium_wavy", "short",
+      "ponytail",      "braid",     "normal_braid",    "two_braids",  "half_up"};
+  return names;
+}
+
+HairStyleSpec preset(const std::string& name) {
+  using Kind = ComponentSpec::Kind;
+  HairStyleSpec spec;
+  spec.name = name;
+  ComponentSpec normal;
+  normal.kind = Kind::normal;
+  if (name == "long_straight" || name == "long_wavy") {
+    normal.length_min_m = 0.30;
+    normal.length_max_m = 0.42;
+    normal.stream_count = 45;
+    if (name == "long_wavy") normal.wave_amplitude_m = 0.01;
+    spec.defects.normal_pieces_max = 3;
+    spec.components = {normal};
+  } else if (name == "medium_straight" || name == "medium_wavy") {
+    normal.length_min_m = 0.14;
+    normal.length_max_m = 0.22;
+    normal.stream_count = 45;
+    if (name == "medium_wavy") normal.wave_amplitude_m = 0.008;
+    normal.wavelength_m = 0.06;
+    spec.defects.normal_pieces_max = 2;
+    spec.components = {normal};
+  } else if (name == "short") {
+    ComponentSpec cards;
+    cards.kind = Kind::short_cards;
+    cards.stream_count = 60;
+    cards.length_min_m = 0.03;
+    cards.length_max_m = 0.07;
+    cards.strip_width_m = 0.025;
+    spec.defects.rails_max = 3;
+    spec.components = {cards};
+  } else if (name == "ponytail") {
+    ComponentSpec tail;
+    tail.kind = Kind::ponytail;
+    tail.stream_count = 10;
+    tail.length_min_m = 0.35;
+    tail.length_max_m = 0.45;
+    tail.strip_width_m = 0.05;
+    spec.components = {tail};
+  } else if (name == "braid") {
+    ComponentSpec braid;
+    braid.kind = Kind::braid;
+    braid.length_min_m = 0.25;
+    braid.length_max_m = 0.32;
+    braid.strip_width_m = 0.014;
+    braid.azimuth_min_deg = -170;
+    braid.azimuth_max_deg = 170;
+    spec.components = {braid};
+  } else if (name == "normal_braid") {
+    ComponentSpec braid;
+    braid.kind = Kind::braid;
+    braid.length_min_m = 0.22;
+    braid.length_max_m = 0.28;
+    braid.strip_width_m = 0.014;
+    braid.azimuth_min_deg = 120;
+    braid.azimuth_max_deg = 180;
+    braid.band_polar_deg = 80;
+    normal.length_min_m = 0.18;
+    normal.length_max_m = 0.26;
+    normal.stream_count = 30;
+    normal.azimuth_min_deg = -120;
+    normal.azimuth_max_deg = 120;
+    spec.defects.normal_pieces_max = 2;
+    spec.components = {normal, braid};
+  } else if (name == "two_braids") {
+    ComponentSpec left;
+    left.kind = Kind::braid;
+    left.length_min_m = 0.22;
+    left.length_max_m = 0.30;
+    left.strip_width_m = 0.013;
+    left.azimuth_min_deg = 0;
+    left.azimuth_max_deg = 180;
+    left.band_azimuth_deg = 120;
+    left.band_polar_deg = 85;
+    ComponentSpec right = left;
+    right.azimuth_min_deg = -180;
+    right.azimuth_max_deg = 0;
+    right.band_azimuth_deg = -120;
+    spec.components = {left, right};
+  } else if (name == "half_up") {
+    ComponentSpec tail;
+    tail.kind = Kind::ponytail;
+    tail.stream_count = 8;
+    tail.polar_max_deg = 60;
+    tail.band_polar_deg = 55;
+    tail.length_min_m = 0.25;
+    tail.length_max_m = 0.32;
+    tail.strip_width_m = 0.05;
+    tail.band_gap_m = 0.045;  // a large hidden gap at the band
+    normal.polar_min_deg = 62;
+    normal.stream_count = 25;
+    normal.length_min_m = 0.18;
+    normal.length_max_m = 0.26;
+    spec.components = {tail, normal};
+  } else {
+    std::string known;
+    for (const std::string& n : preset_names()) known += (known.empty() ? "" : ", ") + n;
+    throw Error::usage("unknown preset '" + name + "'; presets: " + known);
+  }
+  return spec;
+}
+
+HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed) {
+  Rng rng(seed ^ 0x9e3779b9u);
+  for (ComponentSpec& component : spec.components) {
+    if (component.kind != ComponentSpec::Kind::braid)
+      component.stream_count = std::max(
+          3, static_cast<int>(std::lround(component.stream_count * rng.uniform(0.75, 1.25))));
+    double scale = rng.uniform(0.85, 1.15);
+    component.length_min_m *= scale;
+    component.length_max_m *= scale;
+    component.strip_width_m *= rng.uniform(0.85, 1.15);
+    if (component.wave_amplitude_m > 0) component.wave_amplitude_m *= rng.uniform(0.7, 1.3);
+    if (component.kind == ComponentSpec::Kind::braid)
+      component.braid_period_m *= rng.uniform(0.85, 1.15);
+  }
+  DefectSpec& defects = spec.defects;
+  defects.rails_min = rng.integer(2, 3);
+  defects.rails_max = std::max(defects.rails_min, std::min(defects.rails_max, rng.integer(3, 4)));
+  defects.gap_m = rng.uniform(0.002, 0.008);
+  defects.overlap_share = rng.uniform(0.0, 0.4);
+  defects.jitter_m = rng.uniform(0.0, 0.0015);
+  defects.triangulate_share = rng.chance(0.5) ? 0.0 : rng.uniform(0.05, 0.4);
+  defects.reversed_share = rng.uniform(0.0, 0.3);
+  defects.shuffled_share = rng.uniform(0.0, 0.1);
+  return spec;
+}
+
+SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uint32_t seed,
+                          int strands_per_stream) {
+  Rng rng(seed);
+  Head head = measure_head(body_m);
+  std::vector<Stream> streams;
+  for (size_t c = 0; c < spec.components.size(); ++c) {
+    const ComponentSpec& component = spec.components[c];
+    int index = static_cast<int>(c);
+    switch (component.kind) {
+      case ComponentSpec::Kind::normal:
+      case ComponentSpec::Kind::short_cards:
+        add_loose_streams(component, index, spec.defects, head, rng, streams);
+        break;
+      case ComponentSpec::Kind::ponytail:
+        add_ponytail(component, index, spec.defects, head, rng, streams);
+        break;
+      case ComponentSpec::Kind::braid:
+        add_braid(component, index, spec.defects, head, rng, streams);
+        break;
+    }
+  }
+
+  SynthModel model;
+  model.name = spec.name;
+  model.seed = seed;
+  model.spec = spec;
+  std::vector<float> uv;
+  std::vector<Points3f> centres, strand_polylines;
+  std::vector<int32_t> centre_style, strand_stream;
+  for (size_t s = 0; s < streams.size(); ++s) {
+    const Stream& stream = streams[s];
+    auto stream_id = static_cast<int32_t>(s);
+    int pieces = static_cast<int>(stream.pieces.size());
+    for (int k = 0; k < pieces; ++k) {
+      SynthPatch patch = build_patch(stream, stream.pieces[static_cast<size_t>(k)], spec.defects,
+                                     rng, model.mesh, uv, model.vertex_along_m);
+      patch.stream = stream_id;
+      patch.index_in_stream = k;
+      // Algorithm 1 of the paper: no preceding group and no following one: root-free; no
+      // preceding one: root (connected); no following one: tip; otherwise middle.
+      patch.type = pieces == 1       ? GroupType::root_free
+                   : k == 0          ? GroupType::root_connected
+                   : k + 1 == pieces ? GroupType::tip
+                                     : GroupType::middle;
+      model.patches.push_back(patch);
+    }
+    Points3f centre(static_cast<Eigen::Index>(stream.points.size()), 3);
+    for (size_t i = 0; i < stream.points.size(); ++i)
+      centre.row(static_cast<Eigen::Index>(i)) = stream.points[i].cast<float>().transpose();
+    centres.push_back(std::move(centre));
+    model.stream_style.push_back(stream.style);
+    model.stream_component.push_back(stream.component);
+    add_true_strands(stream, stream_id, strands_per_stream, rng, strand_polylines, strand_stream);
+  }
+  model.mesh.corner_uv =
+      Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
+  model.stream_centres = strand_set_from_polylines(centres);
+  model.strands = strand_set_from_polylines(strand_polylines);
+  model.strands.strand_attributes["stream"] = strand_stream;
+  return model;
+}
+
+}  // namespace hair::synth

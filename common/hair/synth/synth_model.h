@@ -1,0 +1,142 @@
+#pragma once
+// Synthetic hair meshes with ground truth (issue 3): hair built the way artists build
+// it (strips and cards of 2-4 rails, caps as grids, braids as many short disjoint
+// patches along three interleaved streams), fitted on a body, with the truth of every
+// patch (stream, group type, style), every stream's centre curve and dense true strands.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hair/poly_mesh.h"
+#include "hair/strand_set.h"
+
+namespace hair::synth {
+
+/// Group types of the paper's Algorithm 1 (section 4.1), in the truth's enum order.
+enum class GroupType : int8_t { root_free = 0, root_connected = 1, middle = 2, tip = 3 };
+
+/// Styles of the paper's section 5.1, in the truth's enum order.
+enum class HairStyle : int8_t { normal = 0, fixed = 1, short_hair = 2, braided = 3 };
+
+/// How a patch's vertex ids run, a defect artists' meshes have (DESIGN.md).
+enum class VertexOrder : int8_t { natural = 0, reversed = 1, shuffled = 2 };
+
+/// One part of a hairstyle: a kind of hair grown from a region of the scalp.
+struct ComponentSpec {
+  enum class Kind { normal, short_cards, ponytail, braid };
+  Kind kind = Kind::normal;
+  /// Streams (strips, cards; for a ponytail the cap patches, one tail strip each).
+  /// Braids always have three streams.
+  int stream_count = 40;
+  /// Length of a stream from its root to its tip, drawn uniformly in [min, max].
+  double length_min_m = 0.30;
+  double length_max_m = 0.40;
+  /// Waves across the strip: amplitude and wavelength (0 amplitude: straight).
+  double wave_amplitude_m = 0.0;
+  double wavelength_m = 0.08;
+  /// Width of a strip or card (caps: at the hairline; braid pieces: the piece).
+  double strip_width_m = 0.03;
+  /// Scalp region of the roots: azimuth around +Y from the face (+Z, 0) towards +X,
+  /// in degrees, and polar angle from the crown, in degrees. The front hairline is
+  /// always respected.
+  double azimuth_min_deg = -180.0;
+  double azimuth_max_deg = 180.0;
+  double polar_min_deg = 0.0;
+  double polar_max_deg = 115.0;
+  /// Ponytail band or braid top: a point on the head at this azimuth and polar angle.
+  double band_azimuth_deg = 180.0;
+  double band_polar_deg = 70.0;
+  /// Braid: half width across (a) and depth (b) of the three streams around the axis,
+  /// and the length of one full braid period.
+  double braid_width_m = 0.014;
+  double braid_depth_m = 0.007;
+  double braid_period_m = 0.07;
+  /// Hidden length left out where a cap meets its tail (ponytail) or braid.
+  double band_gap_m = 0.01;
+};
+
+/// How patches are cut from streams and how much they are spoiled; every defect has a
+/// knob (issue 3).
+struct DefectSpec {
+  int rails_min = 2;  ///< rails (points across) of a strip, drawn in [min, max]
+  int rails_max = 4;
+  int cap_rails = 5;                ///< rails of a cap grid
+  double segment_length_m = 0.015;  ///< quad length along the hair
+  /// Normal hair: pieces each stream is cut into (1: one strip from root to tip).
+  int normal_pieces_max = 1;
+  /// Braid pieces: length of one piece (about a third of a period: one crossing).
+  double braid_piece_length_m = 0.025;
+  /// Hidden length left out between consecutive patches of a stream (negative:
+  /// they overlap by that much).
+  double gap_m = 0.004;
+  /// Share of junctions where consecutive patches overlap instead, by overlap_m.
+  double overlap_share = 0.2;
+  double overlap_m = 0.006;
+  double jitter_m = 0.0008;         ///< uniform noise on every vertex, each axis
+  double triangulate_share = 0.1;   ///< patches whose quads are split into triangles
+  double reversed_share = 0.1;      ///< patches numbered tip to root
+  double shuffled_share = 0.05;     ///< patches numbered at random
+  double scalp_lift_m = 0.004;      ///< roots this far above the head surface
+  double body_clearance_m = 0.008;  ///< hair kept this far off the body
+};
+
+/// A hairstyle: its components and defects (a preset, or a preset varied by a seed).
+struct HairStyleSpec {
+  std::string name;
+  std::vector<ComponentSpec> components;
+  DefectSpec defects;
+};
+
+/// Names of the presets, in gallery order.
+const std::vector<std::string>& preset_names();
+
+/// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.
+HairStyleSpec preset(const std::string& name);
+
+/// `spec` with its knobs varied within plausible bounds by `seed` (the corpus).
+HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed);
+
+/// One patch of the mesh and its truth.
+struct SynthPatch {
+  int32_t stream = -1;
+  int32_t index_in_stream = 0;  ///< 0 at the root
+  GroupType type = GroupType::root_free;
+  HairStyle style = HairStyle::normal;
+  VertexOrder order = VertexOrder::natural;
+  bool triangulated = false;
+  int32_t rails = 2;
+  int64_t first_vertex = 0, vertex_count = 0;  ///< vertex ids [first, first + count)
+  int64_t first_face = 0, face_count = 0;      ///< face ids [first, first + count)
+  double start_m = 0, end_m = 0;               ///< arc length along the stream's centre
+};
+
+/// A generated hairstyle, in metres, +Y up.
+struct SynthModel {
+  std::string name;
+  uint32_t seed = 0;
+  HairStyleSpec spec;
+  PolyMesh mesh;  ///< metres; patches are contiguous in vertex and face ids
+  std::vector<SynthPatch> patches;
+  /// Per vertex: arc length of its row along its stream's centre, metres.
+  std::vector<float> vertex_along_m;
+  /// Centre curve of every stream, root first; strand attribute "style".
+  StrandSet stream_centres;
+  std::vector<HairStyle> stream_style;    ///< #streams: the style of the stream's tip part
+  std::vector<int32_t> stream_component;  ///< #streams: index into spec.components
+  /// Dense true strands, root first; strand attribute "stream".
+  StrandSet strands;
+};
+
+/// Builds a hairstyle on `body_m` (a body mesh in metres, +Y up, face towards +Z),
+/// deterministically from `seed`. Pure: no file access.
+///
+/// Streams start on the head (roots placed on the body's head surface) and grow
+/// outward and down, kept off the body; patches are cut along them; the truth group
+/// types follow Algorithm 1: a stream of one patch is root_free, otherwise its patches
+/// are root_connected, middle..., tip.
+SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uint32_t seed,
+                          int strands_per_stream = 24);
+
+}  // namespace hair::synth

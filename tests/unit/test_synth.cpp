@@ -1,0 +1,227 @@
+// The synthetic hair generator (common/hair/synth, issue 3): every patch labelled, the
+// patches of a stream chained root to tip, determinism, and every preset's mesh read by
+// extract_strands with one group per patch, oriented as the truth says.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+#include "hair/error.h"
+#include "hair/extract.h"
+#include "hair/mesh_io.h"
+#include "hair/synth/synth_io.h"
+#include "hair/synth/synth_model.h"
+#include "hair/triangle_mesh_distance.h"
+
+namespace hair::synth {
+namespace {
+
+const PolyMesh& body_m() {
+  static const PolyMesh body = [] {
+    PolyMesh mesh = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+    mesh.vertices *= 0.1f;
+    return mesh;
+  }();
+  return body;
+}
+
+class SynthPreset : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SynthPreset, EveryPatchLabelledAndPartitioningTheMesh) {
+  SynthModel model = generate_model(preset(GetParam()), body_m(), 7);
+  ASSERT_FALSE(model.patches.empty());
+  int64_t next_vertex = 0, next_face = 0;
+  int32_t streams = static_cast<int32_t>(model.stream_style.size());
+  EXPECT_EQ(model.stream_centres.strand_count(), streams);
+  for (const SynthPatch& patch : model.patches) {
+    EXPECT_GE(patch.stream, 0);
+    EXPECT_LT(patch.stream, streams);
+    EXPECT_EQ(patch.first_vertex, next_vertex);
+    EXPECT_EQ(patch.first_face, next_face);
+    EXPECT_GT(patch.face_count, 0);
+    EXPECT_EQ(patch.vertex_count % patch.rails, 0);
+    next_vertex += patch.vertex_count;
+    next_face += patch.face_count;
+  }
+  EXPECT_EQ(next_vertex, model.mesh.vertex_count());
+  EXPECT_EQ(next_face, model.mesh.face_count());
+  EXPECT_EQ(model.mesh.corner_uv.rows(),
+            static_cast<Eigen::Index>(model.mesh.face_vertices.size()));
+  EXPECT_TRUE(model.mesh.vertices.allFinite());
+  EXPECT_TRUE(model.strands.points.allFinite());
+  EXPECT_GE(model.strands.strand_count(), streams);  // every stream has true strands
+}
+
+TEST_P(SynthPreset, PatchesOfAStreamChainRootToTip) {
+  SynthModel model = generate_model(preset(GetParam()), body_m(), 7);
+  Triangles3i triangles = fan_triangulation(body_m().face_offsets, body_m().face_vertices);
+  TriangleMeshDistance body(body_m().vertices, triangles);
+  std::map<int32_t, std::vector<const SynthPatch*>> by_stream;
+  for (const SynthPatch& patch : model.patches) by_stream[patch.stream].push_back(&patch);
+  ASSERT_EQ(by_stream.size(), model.stream_style.size());
+  // Mean position of the vertices of a patch at arc length `along` (its first or last row).
+  auto row_centre = [&](const SynthPatch& patch, float along) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (int64_t v = patch.first_vertex; v < patch.first_vertex + patch.vertex_count; ++v)
+      if (std::abs(model.vertex_along_m[static_cast<size_t>(v)] - along) < 1e-6f) {
+        sum += model.mesh.vertices.row(v).cast<double>().transpose();
+        ++count;
+      }
+    EXPECT_GT(count, 0);
+    return Eigen::Vector3d(sum / std::max(count, 1));
+  };
+  for (const auto& [stream, patches] : by_stream) {
+    ASSERT_FALSE(patches.empty());
+    // The root lies on the head.
+    EXPECT_LT(
+        body.distance(row_centre(*patches.front(), static_cast<float>(patches.front()->start_m))),
+        0.02)
+        << "stream " << stream;
+    EXPECT_EQ(patches.front()->start_m, 0.0);
+    for (size_t k = 0; k < patches.size(); ++k) {
+      const SynthPatch& patch = *patches[k];
+      EXPECT_EQ(patch.index_in_stream, static_cast<int32_t>(k));
+      GroupType expected = patches.size() == 1       ? GroupType::root_free
+                           : k == 0                  ? GroupType::root_connected
+                           : k + 1 == patches.size() ? GroupType::tip
+                                                     : GroupType::middle;
+      EXPECT_EQ(patch.type, expected) << "stream " << stream << " patch " << k;
+      EXPECT_LT(patch.start_m, patch.end_m);
+      if (k == 0) continue;
+      const SynthPatch& before = *patches[k - 1];
+      // The next patch starts where this one ends, up to the hidden gap (at most the
+      // largest band gap, 4.5 cm) or an overlap.
+      EXPECT_GT(patch.start_m, before.start_m);
+      EXPECT_LT(patch.start_m - before.end_m, 0.05);
+      Eigen::Vector3d end = row_centre(before, static_cast<float>(before.end_m));
+      Eigen::Vector3d start = row_centre(patch, static_cast<float>(patch.start_m));
+      EXPECT_LT((end - start).norm(), 0.06) << "stream " << stream << " patch " << k;
+    }
+  }
+}
+
+TEST_P(SynthPreset, SameSeedSameModelOtherSeedOtherModel) {
+  HairStyleSpec spec = preset(GetParam());
+  SynthModel first = generate_model(spec, body_m(), 11);
+  SynthModel again = generate_model(spec, body_m(), 11);
+  SynthModel other = generate_model(spec, body_m(), 12);
+  EXPECT_EQ(obj_text(first, 0.1), obj_text(again, 0.1));
+  EXPECT_TRUE(first.strands.points == again.strands.points);
+  EXPECT_NE(obj_text(first, 0.1), obj_text(other, 0.1));
+}
+
+/// Share of extracted strands running root to tip by the truth (arc length along the
+/// stream growing from the strand's first point to its last), and the check that each
+/// group is exactly one patch.
+TEST_P(SynthPreset, ExtractFindsEveryPatchOrientedAsTheTruthSays) {
+  for (uint32_t seed : {1u, 2u, 3u}) {
+    SynthModel model = generate_model(varied_spec(preset(GetParam()), seed), body_m(), seed);
+    // Through the OBJ text as hair-synth writes it, in decimetres.
+    std::filesystem::path obj =
+        std::filesystem::temp_directory_path() /
+        ("hair_synth_test_" + GetParam() + "_" + std::to_string(seed) + ".obj");
+    {
+      std::FILE* file = std::fopen(obj.c_str(), "wb");
+      ASSERT_NE(file, nullptr);
+      std::string text = obj_text(model, 0.1);
+      std::fwrite(text.data(), 1, text.size(), file);
+      std::fclose(file);
+    }
+    PolyMesh hair = read_mesh(obj);
+    std::filesystem::remove(obj);
+    PolyMesh body = body_m();
+    body.vertices *= 10.0f;
+    ExtractParams params;
+    params.unit_scale = 0.1;
+    ExtractResult result = extract_strands(hair, body, params, obj.string(), "body.obj");
+    ASSERT_EQ(result.group_count(), static_cast<int32_t>(model.patches.size()))
+        << GetParam() << " seed " << seed;
+
+    std::vector<int64_t> vertex_patch(static_cast<size_t>(model.mesh.vertex_count()));
+    for (size_t p = 0; p < model.patches.size(); ++p)
+      for (int64_t v = 0; v < model.patches[p].vertex_count; ++v)
+        vertex_patch[static_cast<size_t>(model.patches[p].first_vertex + v)] =
+            static_cast<int64_t>(p);
+    const auto& source =
+        std::get<std::vector<int32_t>>(result.strands.point_attributes.at("source_vertex"));
+    // Per group: its patch, and its strands running root to tip, tip to root, or across
+    // (a rail read across the hair: both ends at the same arc length).
+    std::vector<int64_t> group_patch(static_cast<size_t>(result.group_count()), -1);
+    std::array<std::array<int, 3>, 3> by_order{};  // [vertex order][agree, reversed, across]
+    int agreeing_groups = 0;
+    for (int32_t g = 0; g < result.group_count(); ++g) {
+      int votes[3] = {0, 0, 0};
+      for (int32_t s = result.group_first_strand[static_cast<size_t>(g)];
+           s < result.group_first_strand[static_cast<size_t>(g) + 1]; ++s) {
+        int32_t first = source[static_cast<size_t>(result.strands.offsets[static_cast<size_t>(s)])];
+        int32_t last =
+            source[static_cast<size_t>(result.strands.offsets[static_cast<size_t>(s) + 1] - 1)];
+        if (first < 0 || last < 0) continue;  // triangle soup: no source vertices
+        int64_t patch = vertex_patch[static_cast<size_t>(first)];
+        int64_t& mapped = group_patch[static_cast<size_t>(g)];
+        if (mapped < 0) mapped = patch;
+        EXPECT_EQ(mapped, patch) << "a group spans two patches";
+        float along_first = model.vertex_along_m[static_cast<size_t>(first)];
+        float along_last = model.vertex_along_m[static_cast<size_t>(last)];
+        ++votes[along_last > along_first ? 0 : along_last < along_first ? 1 : 2];
+      }
+      int verdict = static_cast<int>(std::max_element(votes, votes + 3) - votes);
+      agreeing_groups += verdict == 0 ? 1 : 0;
+      if (group_patch[static_cast<size_t>(g)] >= 0) {
+        auto order = static_cast<size_t>(
+            model.patches[static_cast<size_t>(group_patch[static_cast<size_t>(g)])].order);
+        ++by_order[order][static_cast<size_t>(verdict)];
+      }
+    }
+    std::vector<int64_t> sorted = group_patch;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(std::unique(sorted.begin(), sorted.end()), sorted.end()) << "two groups on one patch";
+    double share = static_cast<double>(agreeing_groups) / result.group_count();
+    std::printf(
+        "[ synth    ] %-15s seed %u: %3zu patches, %.3f root to tip; natural %d/%d/%d, "
+        "reversed %d/%d/%d, shuffled %d/%d/%d (right/wrong way/across)\n",
+        GetParam().c_str(), seed, model.patches.size(), share, by_order[0][0], by_order[0][1],
+        by_order[0][2], by_order[1][0], by_order[1][1], by_order[1][2], by_order[2][0],
+        by_order[2][1], by_order[2][2]);
+    // Measured over the presets, seeds 1-3: 0.72 (two_braids) to 1.0 (short). Wrong ones
+    // are mostly patches numbered tip to root (extract trusts vertex order unless the
+    // head distance overrules it) and braid pieces; see docs/synth.md.
+    EXPECT_GE(share, 0.65) << GetParam() << " seed " << seed;
+    // Hair numbered root to tip away from braids is never read the wrong way (a few
+    // short wavy pieces are read across).
+    if (model.spec.components.size() == 1 &&
+        model.spec.components[0].kind != ComponentSpec::Kind::braid) {
+      EXPECT_EQ(by_order[0][1], 0) << GetParam() << " seed " << seed;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, SynthPreset, ::testing::ValuesIn(preset_names()),
+                         [](const auto& test_info) { return test_info.param; });
+
+TEST(SynthPresets, UnknownPresetIsAUsageError) { EXPECT_THROW(preset("mohawk"), hair::Error); }
+
+TEST(SynthPresets, CorpusCyclingThePresetsMeetsTheIssuesMinimums) {
+  // What `hair-synth corpus --count 60` builds: model i is preset i mod #presets.
+  std::array<int, 4> totals{};
+  int mixed = 0;
+  const auto& names = preset_names();
+  for (uint32_t i = 0; i < 60; ++i) {
+    HairStyleSpec spec = varied_spec(preset(names[i % names.size()]), 1000 + i);
+    mixed += spec.components.size() > 1 ? 1 : 0;
+    SynthModel model = generate_model(spec, body_m(), 1000 + i, 2);
+    auto counts = streams_by_style(model);
+    for (size_t s = 0; s < 4; ++s) totals[s] += counts[s];
+  }
+  std::printf(
+      "[ synth    ] corpus of 60: streams normal %d, fixed %d, short %d, braided %d; "
+      "%d mixed models\n",
+      totals[0], totals[1], totals[2], totals[3], mixed);
+  for (int total : totals) EXPECT_GE(total, 15);
+  EXPECT_GE(mixed, 10);
+}
+
+}  // namespace
+}  // namespace hair::synth
