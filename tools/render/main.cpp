@@ -10,10 +10,11 @@
 int main(int argc, char** argv) {
   CLI::App app("Render a hairstyle HDF5 file as a PNG (front, side and back views).",
                "hair-render");
-  std::string input_path, output_path, colouring = "group", title;
+  std::string input_path, output_path, colouring = "group", title, extract_path;
   int size_px = 512;
   bool no_body = false;
-  app.add_option("FILE", input_path, "extract.h5 (other stages' files as they come)")->required();
+  app.add_option("FILE", input_path, "extract.h5, or types.h5 with --extract")->required();
+  app.add_option("--extract", extract_path, "the extract.h5 a types.h5 was made from");
   app.add_option("-o,--output", output_path, "PNG to write")->required();
   app.add_option("--color-by", colouring, "group, direction, rule or kind");
   app.add_option("--size", size_px, "pixels per view")->check(CLI::Range(64, 4096));
@@ -32,7 +33,13 @@ int main(int argc, char** argv) {
     options.draw_body = !no_body;
     options.title = title.empty() ? input_path + " (" + colouring + ")" : title;
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
-    cv::Mat image = hair::extract_picture(file, hair::parse_extract_colouring(colouring), options);
+    cv::Mat image;
+    if (extract_path.empty()) {
+      image = hair::extract_picture(file, hair::parse_extract_colouring(colouring), options);
+    } else {
+      if (title.empty()) options.title = input_path + " (type)";
+      image = hair::types_picture(file, hair::h5::File::open_read_only(extract_path), options);
+    }
     hair::write_png(image, output_path);
   } catch (const hair::Error& e) {
     std::cerr << "hair-render: error: " << e.what() << "\n";

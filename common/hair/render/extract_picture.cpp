@@ -7,6 +7,7 @@
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/h5/strand_set_io.h"
+#include "hair/typeify_io.h"
 
 namespace hair {
 namespace {
@@ -18,10 +19,11 @@ const std::vector<cv::Vec3b>& category_colours() {
   return colours;
 }
 
-void draw_legend(cv::Mat& image, const h5::EnumMembers& members) {
+void draw_legend(cv::Mat& image, const h5::EnumMembers& members,
+                 const std::vector<cv::Vec3b>& colours = category_colours()) {
   int y = 44;
   for (const h5::EnumMember& member : members) {
-    cv::Vec3b c = category_colours()[static_cast<size_t>(member.value) % category_colours().size()];
+    cv::Vec3b c = colours[static_cast<size_t>(member.value) % colours.size()];
     cv::rectangle(image, cv::Rect(10, y - 10, 14, 10), cv::Scalar(c[0], c[1], c[2]), cv::FILLED);
     cv::putText(image, member.name, cv::Point(30, y), cv::FONT_HERSHEY_SIMPLEX, 0.45,
                 cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
@@ -83,6 +85,29 @@ cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
   }
   cv::Mat image = render_strands(strands, colours, body_vertices, body_triangles, options);
   if (legend) draw_legend(image, *legend);
+  return image;
+}
+
+cv::Mat types_picture(const h5::File& types, const h5::File& extract,
+                      const RenderOptions& options) {
+  h5::require_schema(types, kTypesSchema);
+  h5::require_schema(extract, kExtractSchema);
+  StrandSet strands = h5::read_strand_set(extract, "/strands");
+  const auto& strand_group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
+  std::vector<int8_t> type = h5::read_enum_dataset(types, "/groups/type", group_type_members());
+  auto group_count = static_cast<int32_t>(type.size());
+  for (int32_t group : strand_group)
+    if (group >= group_count)
+      throw Error::bad_input(types.name(), "has " + std::to_string(group_count) + " groups; " +
+                                               extract.name() + " has more");
+  // BGR: root_free blue, root_connected green, middle orange, tip red.
+  static const std::vector<cv::Vec3b> type_colours = {
+      {200, 110, 30}, {60, 170, 40}, {20, 140, 250}, {40, 40, 210}};
+  PointColours colours = colours_by_table(strands, per_strand(type, strand_group), type_colours);
+  cv::Mat image =
+      render_strands(strands, colours, h5::read_matrix<float, 3>(extract, "/body/vertices"),
+                     h5::read_matrix<int32_t, 3>(extract, "/body/triangles"), options);
+  draw_legend(image, group_type_members(), type_colours);
   return image;
 }
 

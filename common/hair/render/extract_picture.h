@@ -23,4 +23,9 @@ ExtractColouring parse_extract_colouring(const std::string& word);
 cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
                         const RenderOptions& options);
 
+/// Renders the input strands of `extract` coloured by the group types of `types`
+/// (types.h5 made from it), with a legend: root_free blue, root_connected green,
+/// middle orange, tip red.
+cv::Mat types_picture(const h5::File& types, const h5::File& extract, const RenderOptions& options);
+
 }  // namespace hair
