@@ -757,6 +757,8 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
   model.name = spec.name;
   model.seed = seed;
   model.spec = spec;
+  // The true strands draw from their own generator, so that their count leaves the mesh as it is.
+  Rng strand_rng(seed ^ 0x5bd1e995u);
   std::vector<float> uv;
   std::vector<Points3f> centres, strand_polylines;
   std::vector<int32_t> centre_style, strand_stream;
@@ -783,7 +785,8 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     centres.push_back(std::move(centre));
     model.stream_style.push_back(stream.style);
     model.stream_component.push_back(stream.component);
-    add_true_strands(stream, stream_id, strands_per_stream, rng, strand_polylines, strand_stream);
+    add_true_strands(stream, stream_id, strands_per_stream, strand_rng, strand_polylines,
+                     strand_stream);
   }
   model.mesh.corner_uv =
       Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
