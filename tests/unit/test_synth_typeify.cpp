@@ -1,10 +1,13 @@
-// typeify (Algorithm 1) measured against the truth of synthetic hairstyles: the share of
-// groups whose type is the true one, per preset, printed as a table (docs/synth.md).
+// Stages measured against the truth of synthetic hairstyles, printed as tables
+// (docs/synth.md): typeify's group types (Algorithm 1), and which of extract's
+// orientation rules decided the groups it orients the wrong way.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include "hair/extract.h"
 #include "hair/mesh_io.h"
@@ -81,6 +84,43 @@ TEST(SynthTypeify, TypesAgainstTheTruthPerPreset) {
   // Measured: 0.633 of 2056 groups (seeds 1-3 of every preset). A loose floor that
   // catches a broken typeify, not a target.
   EXPECT_GE(static_cast<double>(all.right_type) / all.groups, 0.5);
+}
+
+TEST(SynthExtract, OrientationRuleOfEveryGroupAgainstTheTruth) {
+  PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+  body.vertices *= 0.1f;
+  const char* rules[] = {"vertex_order", "scalp_distance", "continuation",
+                         "uv",           "height",         "parting"};
+  const char* orders[] = {"natural", "reversed", "shuffled"};
+  // (kind of patch, vertex order, rule) -> {right, wrong}
+  std::map<std::string, std::array<int, 2>> counts;
+  for (uint32_t seed = 1; seed <= 6; ++seed)
+    for (const char* name :
+         {"braid", "two_braids", "normal_braid", "long_straight", "medium_straight"}) {
+      SynthModel model = generate_model(varied_spec(preset(name), seed), body, seed, 2);
+      ExtractResult extract = extract_strands(model.mesh, body, ExtractParams{}, name, "body");
+      std::vector<int32_t> patch_of = group_patches(model, extract);
+      std::vector<GroupOrientation> orientation = group_orientations(model, extract, patch_of);
+      for (int32_t g = 0; g < extract.group_count(); ++g) {
+        if (patch_of[static_cast<size_t>(g)] < 0) continue;
+        const SynthPatch& patch =
+            model.patches[static_cast<size_t>(patch_of[static_cast<size_t>(g)])];
+        std::string kind = patch.style == HairStyle::braided ? "braid piece"
+                           : patch.index_in_stream == 0      ? "first piece"
+                                                             : "later piece";
+        std::string key = kind + ", " + orders[static_cast<size_t>(patch.order)] + ", " +
+                          rules[static_cast<size_t>(extract.group_rule[static_cast<size_t>(g)])];
+        ++counts[key][orientation[static_cast<size_t>(g)] == GroupOrientation::root_to_tip ? 0 : 1];
+      }
+    }
+  std::printf("[ synth    ] %-45s %6s %6s\n", "patch, vertex order, rule", "right", "wrong");
+  int right = 0, wrong = 0;
+  for (const auto& [key, votes] : counts) {
+    std::printf("[ synth    ] %-45s %6d %6d\n", key.c_str(), votes[0], votes[1]);
+    right += votes[0];
+    wrong += votes[1];
+  }
+  EXPECT_GT(right, wrong);
 }
 
 }  // namespace
