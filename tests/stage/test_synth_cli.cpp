@@ -85,4 +85,32 @@ TEST(HairSynthCli, UnknownPresetIsAUsageError) {
   EXPECT_TRUE(directory.entries().empty());
 }
 
+TEST(HairSynthCli, PrintedSpecGivesThePresetsFilesAndBadSpecsAreRefused) {
+  TemporaryDirectory directory("synth_spec");
+  CommandResult printed = run_command(kSynth, {"--preset", "braid", "--print-spec"});
+  ASSERT_EQ(printed.exit_code, 0) << describe(printed);
+  hair::test::write_text_file(directory / "braid.json", printed.out);
+  CommandResult from_spec = run_command(
+      kSynth, {"--spec", (directory / "braid.json").string(), "--seed", "4", "--reproducible",
+               "--body", kBody.string(), "-o", (directory / "spec").string()});
+  ASSERT_EQ(from_spec.exit_code, 0) << describe(from_spec);
+  CommandResult from_preset =
+      run_command(kSynth, {"--preset", "braid", "--seed", "4", "--reproducible", "--body",
+                           kBody.string(), "-o", (directory / "preset").string()});
+  ASSERT_EQ(from_preset.exit_code, 0) << describe(from_preset);
+  EXPECT_EQ(read_file_bytes(directory / "spec" / "braid.obj"),
+            read_file_bytes(directory / "preset" / "braid.obj"));
+  EXPECT_EQ(read_file_bytes(directory / "spec" / "braid.truth.h5"),
+            read_file_bytes(directory / "preset" / "braid.truth.h5"));
+
+  std::string bad = printed.out;
+  bad.replace(bad.find("\"jitter_m\""), 10, "\"jiter_m\"");
+  hair::test::write_text_file(directory / "bad.json", bad);
+  CommandResult refused = run_command(
+      kSynth, {"--spec", (directory / "bad.json").string(), "-o", (directory / "bad").string()});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("unknown key 'defects.jiter_m'"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(directory / "bad"));
+}
+
 }  // namespace

@@ -223,5 +223,25 @@ TEST(SynthPresets, CorpusCyclingThePresetsMeetsTheIssuesMinimums) {
   EXPECT_GE(mixed, 10);
 }
 
+TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
+  for (const std::string& name : preset_names()) {
+    HairStyleSpec spec = varied_spec(preset(name), 5);
+    EXPECT_NO_THROW(check_spec(spec)) << name;
+    EXPECT_EQ(spec_json(spec_from_json(spec_json(spec))), spec_json(spec)) << name;
+  }
+  nlohmann::json json = spec_json(preset("short"));
+  json["defects"]["reversed_share"] = 2.0;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("short"));
+  json["defects"]["rails"] = 3;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("short"));
+  json["components"][0]["kind"] = "mohawk";
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("short"));
+  json["components"][0]["stream_count"] = "many";
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+}
+
 }  // namespace
 }  // namespace hair::synth

@@ -149,6 +149,19 @@ void write_gallery(const fs::path& png_path, int view_size_px, const Common& com
   hair::write_png(gallery, png_path.string());
 }
 
+/// A specification from a JSON file (spec_from_json); bad JSON is a usage error naming it.
+hair::synth::HairStyleSpec read_spec(const std::string& path) {
+  std::ifstream stream(path);
+  if (!stream) throw hair::Error::bad_input(path, "cannot read the specification");
+  nlohmann::json json = nlohmann::json::parse(stream, nullptr, false);
+  if (json.is_discarded()) throw hair::Error::bad_input(path, "not valid JSON");
+  try {
+    return hair::synth::spec_from_json(json);
+  } catch (const hair::Error& e) {
+    throw hair::Error(hair::ErrorKind::usage, path, "", e.reason());
+  }
+}
+
 void add_common(CLI::App& app, Common& common) {
   app.add_option("--body", common.body_path, "body mesh the hair is fitted on")
       ->capture_default_str();
@@ -172,7 +185,14 @@ int main(int argc, char** argv) {
   std::string preset, name, output;
   uint32_t seed = 1;
   bool list_presets = false, vary = false;
+  std::string spec_path;
+  bool print_spec = false;
   app.add_option("--preset", preset, "hairstyle preset (--list-presets)");
+  app.add_option("--spec", spec_path,
+                 "hairstyle specification as JSON (the form --print-spec prints), instead of "
+                 "--preset: every component and defect knob");
+  app.add_flag("--print-spec", print_spec,
+               "print the specification of --preset (after --vary) as JSON and exit");
   app.add_option("--seed", seed, "random seed")->capture_default_str();
   app.add_option("--name", name, "file stem of the outputs (default: the preset)");
   app.add_flag("--vary", vary, "vary the preset's knobs by the seed, as the corpus does");
@@ -221,15 +241,23 @@ int main(int argc, char** argv) {
       write_gallery(gallery_output, view_size_px, common);
       return 0;
     }
-    if (preset.empty() || output.empty())
-      throw hair::Error::usage("--preset and -o are required (or a subcommand: corpus, gallery)");
+    if (preset.empty() == spec_path.empty())
+      throw hair::Error::usage(
+          "give one of --preset and --spec (or a subcommand: corpus, gallery)");
     auto start = std::chrono::steady_clock::now();
-    auto spec = hair::synth::preset(preset);
+    hair::synth::HairStyleSpec spec =
+        spec_path.empty() ? hair::synth::preset(preset) : read_spec(spec_path);
     if (vary) spec = hair::synth::varied_spec(spec, seed);
+    if (print_spec) {
+      std::cout << hair::synth::spec_json(spec).dump(2) << "\n";
+      return 0;
+    }
+    if (output.empty()) throw hair::Error::usage("-o is required");
+    if (name.empty()) name = spec.name.empty() ? "custom" : spec.name;
     fs::create_directories(output);
     SynthModel model =
         hair::synth::generate_model(spec, body_in_metres(common), seed, common.strands_per_stream);
-    write_model(model, name.empty() ? preset : name, output, common, seconds_since(start));
+    write_model(model, name, output, common, seconds_since(start));
   } catch (const hair::Error& e) {
     std::cerr << "hair-synth: error: " << e.what() << "\n";
     return e.exit_code();

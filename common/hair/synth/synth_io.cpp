@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <type_traits>
 
+#include "hair/error.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
@@ -128,6 +131,158 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
                      {"scalp_lift_m", d.scalp_lift_m},
                      {"body_clearance_m", d.body_clearance_m}};
   return json;
+}
+
+namespace {
+
+/// Reads `json[key]` into `value` if present, as the type of `value`.
+template <class T>
+void read_key(const nlohmann::json& json, const std::string& where, const char* key, T& value) {
+  auto found = json.find(key);
+  if (found == json.end()) return;
+  bool ok = std::is_same_v<T, std::string> ? found->is_string()
+            : std::is_integral_v<T>        ? found->is_number_integer()
+                                           : found->is_number();
+  if (!ok)
+    throw Error::usage(where + key + ": expected a " +
+                       (std::is_same_v<T, std::string> ? "string"
+                        : std::is_integral_v<T>        ? "whole number"
+                                                       : "number") +
+                       ", found " + found->dump());
+  value = found->get<T>();
+}
+
+/// Refuses keys of `json` outside `known`.
+void require_known_keys(const nlohmann::json& json, const std::string& where,
+                        const std::vector<std::string>& known) {
+  if (!json.is_object()) throw Error::usage(where + ": expected an object");
+  for (const auto& item : json.items())
+    if (std::find(known.begin(), known.end(), item.key()) == known.end())
+      throw Error::usage("unknown key '" + where + item.key() + "' in the specification");
+}
+
+void require_range(const std::string& name, double value, double lo, double hi) {
+  if (!(value >= lo && value <= hi))
+    throw Error::usage(fmt::format("{} = {}: expected {} to {}", name, value, lo, hi));
+}
+
+}  // namespace
+
+HairStyleSpec spec_from_json(const nlohmann::json& json) {
+  require_known_keys(json, "", {"name", "components", "defects"});
+  HairStyleSpec spec;
+  read_key(json, "", "name", spec.name);
+  if (json.contains("components")) {
+    if (!json["components"].is_array()) throw Error::usage("components: expected an array");
+    for (size_t i = 0; i < json["components"].size(); ++i) {
+      const nlohmann::json& item = json["components"][i];
+      std::string where = fmt::format("components[{}].", i);
+      require_known_keys(
+          item, where,
+          {"kind", "stream_count", "length_min_m", "length_max_m", "wave_amplitude_m",
+           "wavelength_m", "strip_width_m", "azimuth_min_deg", "azimuth_max_deg", "polar_min_deg",
+           "polar_max_deg", "band_azimuth_deg", "band_polar_deg", "braid_width_m", "braid_depth_m",
+           "braid_period_m", "band_gap_m"});
+      ComponentSpec c;
+      std::string kind = "normal";
+      read_key(item, where, "kind", kind);
+      if (kind == "normal")
+        c.kind = ComponentSpec::Kind::normal;
+      else if (kind == "short_cards")
+        c.kind = ComponentSpec::Kind::short_cards;
+      else if (kind == "ponytail")
+        c.kind = ComponentSpec::Kind::ponytail;
+      else if (kind == "braid")
+        c.kind = ComponentSpec::Kind::braid;
+      else
+        throw Error::usage(where + "kind = \"" + kind +
+                           "\": expected normal, short_cards, ponytail or braid");
+      read_key(item, where, "stream_count", c.stream_count);
+      read_key(item, where, "length_min_m", c.length_min_m);
+      read_key(item, where, "length_max_m", c.length_max_m);
+      read_key(item, where, "wave_amplitude_m", c.wave_amplitude_m);
+      read_key(item, where, "wavelength_m", c.wavelength_m);
+      read_key(item, where, "strip_width_m", c.strip_width_m);
+      read_key(item, where, "azimuth_min_deg", c.azimuth_min_deg);
+      read_key(item, where, "azimuth_max_deg", c.azimuth_max_deg);
+      read_key(item, where, "polar_min_deg", c.polar_min_deg);
+      read_key(item, where, "polar_max_deg", c.polar_max_deg);
+      read_key(item, where, "band_azimuth_deg", c.band_azimuth_deg);
+      read_key(item, where, "band_polar_deg", c.band_polar_deg);
+      read_key(item, where, "braid_width_m", c.braid_width_m);
+      read_key(item, where, "braid_depth_m", c.braid_depth_m);
+      read_key(item, where, "braid_period_m", c.braid_period_m);
+      read_key(item, where, "band_gap_m", c.band_gap_m);
+      spec.components.push_back(c);
+    }
+  }
+  if (json.contains("defects")) {
+    const nlohmann::json& item = json["defects"];
+    const std::string where = "defects.";
+    require_known_keys(item, where,
+                       {"rails_min", "rails_max", "cap_rails", "segment_length_m",
+                        "normal_pieces_max", "braid_piece_length_m", "gap_m", "overlap_share",
+                        "overlap_m", "jitter_m", "triangulate_share", "reversed_share",
+                        "shuffled_share", "scalp_lift_m", "body_clearance_m"});
+    DefectSpec& d = spec.defects;
+    read_key(item, where, "rails_min", d.rails_min);
+    read_key(item, where, "rails_max", d.rails_max);
+    read_key(item, where, "cap_rails", d.cap_rails);
+    read_key(item, where, "segment_length_m", d.segment_length_m);
+    read_key(item, where, "normal_pieces_max", d.normal_pieces_max);
+    read_key(item, where, "braid_piece_length_m", d.braid_piece_length_m);
+    read_key(item, where, "gap_m", d.gap_m);
+    read_key(item, where, "overlap_share", d.overlap_share);
+    read_key(item, where, "overlap_m", d.overlap_m);
+    read_key(item, where, "jitter_m", d.jitter_m);
+    read_key(item, where, "triangulate_share", d.triangulate_share);
+    read_key(item, where, "reversed_share", d.reversed_share);
+    read_key(item, where, "shuffled_share", d.shuffled_share);
+    read_key(item, where, "scalp_lift_m", d.scalp_lift_m);
+    read_key(item, where, "body_clearance_m", d.body_clearance_m);
+  }
+  check_spec(spec);
+  return spec;
+}
+
+void check_spec(const HairStyleSpec& spec) {
+  if (spec.components.empty()) throw Error::usage("components: expected at least one");
+  for (size_t i = 0; i < spec.components.size(); ++i) {
+    const ComponentSpec& c = spec.components[i];
+    std::string where = fmt::format("components[{}].", i);
+    require_range(where + "stream_count", c.stream_count, 1, 2000);
+    require_range(where + "length_min_m", c.length_min_m, 0.01, 2.0);
+    require_range(where + "length_max_m", c.length_max_m, c.length_min_m, 2.0);
+    require_range(where + "wave_amplitude_m", c.wave_amplitude_m, 0, 0.1);
+    require_range(where + "wavelength_m", c.wavelength_m, 0.005, 1.0);
+    require_range(where + "strip_width_m", c.strip_width_m, 0.002, 0.2);
+    require_range(where + "azimuth_min_deg", c.azimuth_min_deg, -180, 180);
+    require_range(where + "azimuth_max_deg", c.azimuth_max_deg, c.azimuth_min_deg, 180);
+    require_range(where + "polar_min_deg", c.polar_min_deg, 0, 180);
+    require_range(where + "polar_max_deg", c.polar_max_deg, c.polar_min_deg, 180);
+    require_range(where + "band_azimuth_deg", c.band_azimuth_deg, -180, 180);
+    require_range(where + "band_polar_deg", c.band_polar_deg, 0, 180);
+    require_range(where + "braid_width_m", c.braid_width_m, 0, 0.1);
+    require_range(where + "braid_depth_m", c.braid_depth_m, 0, 0.1);
+    require_range(where + "braid_period_m", c.braid_period_m, 0.01, 1.0);
+    require_range(where + "band_gap_m", c.band_gap_m, 0, 0.2);
+  }
+  const DefectSpec& d = spec.defects;
+  require_range("defects.rails_min", d.rails_min, 2, 8);
+  require_range("defects.rails_max", d.rails_max, d.rails_min, 8);
+  require_range("defects.cap_rails", d.cap_rails, 2, 16);
+  require_range("defects.segment_length_m", d.segment_length_m, 0.001, 0.1);
+  require_range("defects.normal_pieces_max", d.normal_pieces_max, 1, 20);
+  require_range("defects.braid_piece_length_m", d.braid_piece_length_m, 0.005, 0.2);
+  require_range("defects.gap_m", d.gap_m, -0.05, 0.1);
+  require_range("defects.overlap_share", d.overlap_share, 0, 1);
+  require_range("defects.overlap_m", d.overlap_m, 0, 0.05);
+  require_range("defects.jitter_m", d.jitter_m, 0, 0.01);
+  require_range("defects.triangulate_share", d.triangulate_share, 0, 1);
+  require_range("defects.reversed_share", d.reversed_share, 0, 1);
+  require_range("defects.shuffled_share", d.shuffled_share, 0, 1 - d.reversed_share);
+  require_range("defects.scalp_lift_m", d.scalp_lift_m, 0, 0.05);
+  require_range("defects.body_clearance_m", d.body_clearance_m, 0.001, 0.05);
 }
 
 void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale,

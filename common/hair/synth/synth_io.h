@@ -20,6 +20,14 @@ std::string obj_text(const SynthModel& model, double unit_scale);
 /// The specification as JSON (the truth file's `parameters` attribute and the manifest).
 nlohmann::ordered_json spec_json(const HairStyleSpec& spec);
 
+/// The specification read back from spec_json()'s form: keys left out keep their
+/// defaults (ComponentSpec{}, DefectSpec{}); an unknown key, a value of the wrong type or
+/// out of range is a usage error naming it ("defects.rails_max = 9: expected 2..8").
+HairStyleSpec spec_from_json(const nlohmann::json& json);
+
+/// Throws hair::Error (usage) naming the first knob out of range.
+void check_spec(const HairStyleSpec& spec);
+
 /// Writes every dataset and attribute of the truth file but the provenance ones.
 void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale,
                       const std::string& mesh_file_name);
