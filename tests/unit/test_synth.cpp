@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 
 #include "hair/error.h"
 #include "hair/extract.h"
@@ -51,6 +52,12 @@ TEST_P(SynthPreset, EveryPatchLabelledAndPartitioningTheMesh) {
   EXPECT_TRUE(model.mesh.vertices.allFinite());
   EXPECT_TRUE(model.strands.points.allFinite());
   EXPECT_GE(model.strands.strand_count(), streams);  // every stream has true strands
+  EXPECT_EQ(static_cast<int64_t>(model.strand_point_style.size()), model.strands.point_count());
+  // Every style of a patch is the style of some true-strand points, and no other is.
+  std::set<HairStyle> patch_styles,
+      point_styles(model.strand_point_style.begin(), model.strand_point_style.end());
+  for (const SynthPatch& patch : model.patches) patch_styles.insert(patch.style);
+  EXPECT_EQ(patch_styles, point_styles);
 }
 
 TEST_P(SynthPreset, PatchesOfAStreamChainRootToTip) {

@@ -100,8 +100,8 @@ void write_corpus(int count, uint32_t base_seed, const fs::path& directory, cons
       mixed_models, totals[0], totals[1], totals[2], totals[3]);
 }
 
-/// A picture of every preset (seed 1): strands coloured by stream (left) and by style
-/// (right), seen from the side and the back.
+/// A picture of every preset (seed 1): strands coloured by stream (left) and by the style
+/// of the hair at each point (right), seen from the side and the back.
 void write_gallery(const fs::path& png_path, int view_size_px, const Common& common) {
   hair::PolyMesh body = body_in_metres(common);
   hair::Triangles3i triangles = hair::fan_triangulation(body.face_offsets, body.face_vertices);
@@ -114,9 +114,9 @@ void write_gallery(const fs::path& png_path, int view_size_px, const Common& com
                                                    common.strands_per_stream);
     const auto& stream_column =
         std::get<std::vector<int32_t>>(model.strands.strand_attributes.at("stream"));
-    std::vector<int32_t> style_column;
-    for (int32_t stream : stream_column)
-      style_column.push_back(static_cast<int32_t>(model.stream_style[static_cast<size_t>(stream)]));
+    hair::PointColours style_colour_of_point;
+    for (hair::synth::HairStyle style : model.strand_point_style)
+      style_colour_of_point.push_back(style_colours[static_cast<size_t>(style)]);
     hair::RenderOptions options;
     options.views = {hair::ViewDirection::side, hair::ViewDirection::back};
     options.view_size_px = view_size_px;
@@ -125,9 +125,8 @@ void write_gallery(const fs::path& png_path, int view_size_px, const Common& com
         hair::render_strands(model.strands, hair::colours_by_id(model.strands, stream_column),
                              body.vertices, triangles, options);
     options.title = preset + ": styles";
-    cv::Mat by_style = hair::render_strands(
-        model.strands, hair::colours_by_table(model.strands, style_column, style_colours),
-        body.vertices, triangles, options);
+    cv::Mat by_style = hair::render_strands(model.strands, style_colour_of_point, body.vertices,
+                                            triangles, options);
     cv::Mat tile;
     cv::hconcat(by_stream, by_style, tile);
     tiles.push_back(tile);

@@ -336,6 +336,8 @@ void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale
                          members("/streams/style"));
   h5::write_vector(file, "/streams/component", model.stream_component);
   h5::write_strand_set(file, "/strands", model.strands);
+  h5::write_enum_dataset(file, "/strands/point_style", enum_values(model.strand_point_style),
+                         members("/strands/point_style"));
 }
 
 std::array<int, 4> streams_by_style(const SynthModel& model) {

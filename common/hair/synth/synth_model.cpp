@@ -575,10 +575,21 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
   return patch;
 }
 
+/// Style of the hair at arc length `along_m` of a stream: that of the last piece starting
+/// at or before it (hidden gaps take the style of the piece before them).
+HairStyle style_at(const Stream& stream, double along_m) {
+  HairStyle style = stream.pieces.front().style;
+  for (const Piece& piece : stream.pieces)
+    if (piece.start_m <= along_m) style = piece.style;
+  return style;
+}
+
 /// Dense true strands of a stream: `count` strands at fixed places across the stream's
-/// width and thickness (a third of its width), following its centre.
+/// width and thickness (a third of its width), following its centre; the style of every
+/// point is appended to `point_style`.
 void add_true_strands(const Stream& stream, int32_t stream_id, int count, Rng& rng,
-                      std::vector<Points3f>& polylines, std::vector<int32_t>& strand_stream) {
+                      std::vector<Points3f>& polylines, std::vector<int32_t>& strand_stream,
+                      std::vector<HairStyle>& point_style) {
   for (int j = 0; j < count; ++j) {
     double u = rng.uniform(-0.5, 0.5), v = rng.uniform(-0.5, 0.5) / 3.0;
     double end = stream.length_m() * (stream.trim_tips ? rng.uniform(0.9, 1.0) : 1.0);
@@ -592,6 +603,8 @@ void add_true_strands(const Stream& stream, int32_t stream_id, int count, Rng& r
       polyline.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
     polylines.push_back(std::move(polyline));
     strand_stream.push_back(stream_id);
+    for (size_t i = 0; i < points.size(); ++i)
+      point_style.push_back(style_at(stream, stream.along_m[i]));
   }
 }
 
@@ -786,7 +799,7 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     model.stream_style.push_back(stream.style);
     model.stream_component.push_back(stream.component);
     add_true_strands(stream, stream_id, strands_per_stream, strand_rng, strand_polylines,
-                     strand_stream);
+                     strand_stream, model.strand_point_style);
   }
   model.mesh.corner_uv =
       Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);

@@ -127,6 +127,9 @@ struct SynthModel {
   std::vector<int32_t> stream_component;  ///< #streams: index into spec.components
   /// Dense true strands, root first; strand attribute "stream".
   StrandSet strands;
+  /// #points of strands: the style of the hair at each point (a ponytail's strands are
+  /// fixed on the cap, normal in the tail).
+  std::vector<HairStyle> strand_point_style;
 };
 
 /// Builds a hairstyle on `body_m` (a body mesh in metres, +Y up, face towards +Z),
