@@ -506,10 +506,11 @@ void add_braid(const ComponentSpec& component, int component_index, const Defect
 }
 
 /// The patch of `piece`: rows along the stream, `piece.rails` points across; returns
-/// the patch and appends its vertices, faces and UVs to `mesh`.
+/// the patch and appends its vertex positions (x, y, z each) to `positions`, the arc
+/// length of each vertex to `vertex_along_m`, its faces to `mesh` and their UVs to `uv`.
 SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpec& defects,
-                       Rng& rng, PolyMesh& mesh, std::vector<float>& uv,
-                       std::vector<float>& vertex_along_m) {
+                       Rng& rng, std::vector<float>& positions, PolyMesh& mesh,
+                       std::vector<float>& uv, std::vector<float>& vertex_along_m) {
   SynthPatch patch;
   patch.style = piece.style;
   patch.rails = std::max(2, piece.rails);
@@ -532,12 +533,11 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
       for (int c = 0; c < columns; ++c) id[r * columns + c] = (rows - 1 - r) * columns + c;
   if (patch.order == VertexOrder::shuffled) rng.shuffle(id);
 
-  auto base = static_cast<int32_t>(mesh.vertex_count());
+  auto base = static_cast<int32_t>(vertex_along_m.size());
   patch.first_vertex = base;
   patch.vertex_count = count;
   patch.first_face = mesh.face_count();
-  Points3f vertices(mesh.vertex_count() + count, 3);
-  vertices.topRows(mesh.vertex_count()) = mesh.vertices;
+  positions.resize(3 * static_cast<size_t>(base + count));
   vertex_along_m.resize(static_cast<size_t>(base + count));
   for (int r = 0; r < rows; ++r) {
     double s = piece.start_m + (piece.end_m - piece.start_m) * r / (rows - 1);
@@ -548,11 +548,11 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
       Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
       Vec3 p = centre + u * width * across + defects.jitter_m * jitter;
       int32_t v = base + id[static_cast<size_t>(r * columns + c)];
-      vertices.row(v) = p.cast<float>().transpose();
+      for (int k = 0; k < 3; ++k)
+        positions[3 * static_cast<size_t>(v) + static_cast<size_t>(k)] = static_cast<float>(p[k]);
       vertex_along_m[static_cast<size_t>(v)] = static_cast<float>(s);
     }
   }
-  mesh.vertices = std::move(vertices);
   auto corner = [&](int r, int c) {
     uv.push_back(static_cast<float>(c) / static_cast<float>(columns - 1));
     uv.push_back(static_cast<float>(r) / static_cast<float>(rows - 1));
@@ -772,7 +772,7 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
   model.spec = spec;
   // The true strands draw from their own generator, so that their count leaves the mesh as it is.
   Rng strand_rng(seed ^ 0x5bd1e995u);
-  std::vector<float> uv;
+  std::vector<float> uv, positions;
   std::vector<Points3f> centres, strand_polylines;
   std::vector<int32_t> centre_style, strand_stream;
   for (size_t s = 0; s < streams.size(); ++s) {
@@ -781,7 +781,7 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     int pieces = static_cast<int>(stream.pieces.size());
     for (int k = 0; k < pieces; ++k) {
       SynthPatch patch = build_patch(stream, stream.pieces[static_cast<size_t>(k)], spec.defects,
-                                     rng, model.mesh, uv, model.vertex_along_m);
+                                     rng, positions, model.mesh, uv, model.vertex_along_m);
       patch.stream = stream_id;
       patch.index_in_stream = k;
       // Algorithm 1 of the paper: no preceding group and no following one: root-free; no
@@ -801,6 +801,8 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     add_true_strands(stream, stream_id, strands_per_stream, strand_rng, strand_polylines,
                      strand_stream, model.strand_point_style);
   }
+  model.mesh.vertices = Eigen::Map<const Points3f>(
+      positions.data(), static_cast<Eigen::Index>(positions.size() / 3), 3);
   model.mesh.corner_uv =
       Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
   model.stream_centres = strand_set_from_polylines(centres);
