@@ -774,7 +774,7 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
   Rng strand_rng(seed ^ 0x5bd1e995u);
   std::vector<float> uv, positions;
   std::vector<Points3f> centres, strand_polylines;
-  std::vector<int32_t> centre_style, strand_stream;
+  std::vector<int32_t> strand_stream;
   for (size_t s = 0; s < streams.size(); ++s) {
     const Stream& stream = streams[s];
     auto stream_id = static_cast<int32_t>(s);
