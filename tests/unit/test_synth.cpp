@@ -190,14 +190,15 @@ INSTANTIATE_TEST_SUITE_P(Presets, SynthPreset, ::testing::ValuesIn(preset_names(
 TEST(SynthPresets, UnknownPresetIsAUsageError) { EXPECT_THROW(preset("mohawk"), hair::Error); }
 
 TEST(SynthPresets, CorpusCyclingThePresetsMeetsTheIssuesMinimums) {
-  // What `hair-synth corpus --count 60` builds: model i is preset i mod #presets.
+  // What `hair-synth corpus --count 60` builds.
   std::array<int, 4> totals{};
   int mixed = 0;
-  const auto& names = preset_names();
-  for (uint32_t i = 0; i < 60; ++i) {
-    HairStyleSpec spec = varied_spec(preset(names[i % names.size()]), 1000 + i);
-    mixed += spec.components.size() > 1 ? 1 : 0;
-    SynthModel model = generate_model(spec, body_m(), 1000 + i, 2);
+  std::vector<CorpusEntry> plan = corpus_plan(60, 1);
+  ASSERT_EQ(plan.size(), 60u);
+  EXPECT_EQ(plan[13].name, "medium_wavy_013");
+  for (const CorpusEntry& entry : plan) {
+    mixed += entry.spec.components.size() > 1 ? 1 : 0;
+    SynthModel model = generate_model(entry.spec, body_m(), entry.seed, 2);
     auto counts = streams_by_style(model);
     for (size_t s = 0; s < 4; ++s) totals[s] += counts[s];
   }

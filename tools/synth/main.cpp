@@ -15,6 +15,7 @@
 #include "hair/mesh_io.h"
 #include "hair/provenance.h"
 #include "hair/render/strand_render.h"
+#include "hair/render/synth_gallery.h"
 #include "hair/synth/synth_io.h"
 
 namespace {
@@ -67,32 +68,28 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// `count` models cycling through the presets, each varied by its own seed, and
-/// DIR/manifest.tsv: one line per model with its streams per style.
+/// The models of corpus_plan() and DIR/manifest.tsv: one line per model with its
+/// streams per style.
 void write_corpus(int count, uint32_t base_seed, const fs::path& directory, const Common& common) {
   hair::PolyMesh body = body_in_metres(common);
-  const auto& presets = hair::synth::preset_names();
   std::string manifest =
       "name\tpreset\tseed\tmixed\tpatches\tvertices\tstreams\tnormal\tfixed\tshort\tbraided\n";
   std::array<int, 4> totals{};
   int mixed_models = 0;
-  for (int i = 0; i < count; ++i) {
+  for (const hair::synth::CorpusEntry& entry : hair::synth::corpus_plan(count, base_seed)) {
     auto start = std::chrono::steady_clock::now();
-    const std::string& preset = presets[static_cast<size_t>(i) % presets.size()];
-    uint32_t seed = base_seed * 1000u + static_cast<uint32_t>(i);
-    auto spec = hair::synth::varied_spec(hair::synth::preset(preset), seed);
-    SynthModel model = hair::synth::generate_model(spec, body, seed, common.strands_per_stream);
-    std::string name = fmt::format("{}_{:03d}", preset, i);
-    write_model(model, name, directory, common, seconds_since(start));
+    SynthModel model =
+        hair::synth::generate_model(entry.spec, body, entry.seed, common.strands_per_stream);
+    write_model(model, entry.name, directory, common, seconds_since(start));
     auto by_style = hair::synth::streams_by_style(model);
-    bool mixed = spec.components.size() > 1;
+    bool mixed = entry.spec.components.size() > 1;
     mixed_models += mixed ? 1 : 0;
     for (size_t s = 0; s < 4; ++s) totals[s] += by_style[s];
     manifest +=
-        fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", name, preset, seed,
-                    mixed ? 1 : 0, model.patches.size(), model.mesh.vertex_count(),
+        fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", entry.name, entry.preset,
+                    entry.seed, mixed ? 1 : 0, model.patches.size(), model.mesh.vertex_count(),
                     model.stream_style.size(), by_style[0], by_style[1], by_style[2], by_style[3]);
-    std::cerr << "hair-synth: " << name << ": " << model.patches.size() << " patches\n";
+    std::cerr << "hair-synth: " << entry.name << ": " << model.patches.size() << " patches\n";
   }
   write_text_atomically(directory / "manifest.tsv", manifest);
   std::cout << fmt::format(
@@ -100,52 +97,14 @@ void write_corpus(int count, uint32_t base_seed, const fs::path& directory, cons
       mixed_models, totals[0], totals[1], totals[2], totals[3]);
 }
 
-/// A picture of every preset (seed 1): strands coloured by stream (left) and by the style
-/// of the hair at each point (right), seen from the side and the back.
+/// A picture of every preset (seed 1), see synth_gallery().
 void write_gallery(const fs::path& png_path, int view_size_px, const Common& common) {
   hair::PolyMesh body = body_in_metres(common);
-  hair::Triangles3i triangles = hair::fan_triangulation(body.face_offsets, body.face_vertices);
-  // BGR: normal yellow, fixed brown, short green, braided blue (the paper's Figure 9).
-  const std::vector<cv::Vec3b> style_colours = {
-      {60, 200, 240}, {40, 70, 140}, {80, 180, 60}, {220, 110, 40}};
-  std::vector<cv::Mat> rows, tiles;
-  for (const std::string& preset : hair::synth::preset_names()) {
-    SynthModel model = hair::synth::generate_model(hair::synth::preset(preset), body, 1,
-                                                   common.strands_per_stream);
-    const auto& stream_column =
-        std::get<std::vector<int32_t>>(model.strands.strand_attributes.at("stream"));
-    hair::PointColours style_colour_of_point;
-    for (hair::synth::HairStyle style : model.strand_point_style)
-      style_colour_of_point.push_back(style_colours[static_cast<size_t>(style)]);
-    hair::RenderOptions options;
-    options.views = {hair::ViewDirection::side, hair::ViewDirection::back};
-    options.view_size_px = view_size_px;
-    options.title = preset + ": streams";
-    cv::Mat by_stream =
-        hair::render_strands(model.strands, hair::colours_by_id(model.strands, stream_column),
-                             body.vertices, triangles, options);
-    options.title = preset + ": styles";
-    cv::Mat by_style = hair::render_strands(model.strands, style_colour_of_point, body.vertices,
-                                            triangles, options);
-    cv::Mat tile;
-    cv::hconcat(by_stream, by_style, tile);
-    tiles.push_back(tile);
-    if (tiles.size() == 2) {
-      cv::Mat row;
-      cv::hconcat(tiles, row);
-      rows.push_back(row);
-      tiles.clear();
-    }
-  }
-  if (!tiles.empty()) {
-    tiles.push_back(cv::Mat(tiles[0].size(), tiles[0].type(), cv::Scalar(255, 255, 255)));
-    cv::Mat row;
-    cv::hconcat(tiles, row);
-    rows.push_back(row);
-  }
-  cv::Mat gallery;
-  cv::vconcat(rows, gallery);
-  hair::write_png(gallery, png_path.string());
+  std::vector<SynthModel> models;
+  for (const std::string& preset : hair::synth::preset_names())
+    models.push_back(hair::synth::generate_model(hair::synth::preset(preset), body, 1,
+                                                 common.strands_per_stream));
+  hair::write_png(hair::synth_gallery(models, body, view_size_px), png_path.string());
 }
 
 /// A specification from a JSON file (spec_from_json); bad JSON is a usage error naming it.

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <numeric>
 #include <random>
@@ -742,6 +743,22 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed) {
   defects.reversed_share = rng.uniform(0.0, 0.3);
   defects.shuffled_share = rng.uniform(0.0, 0.1);
   return spec;
+}
+
+std::vector<CorpusEntry> corpus_plan(int count, uint32_t base_seed) {
+  const std::vector<std::string>& names = preset_names();
+  std::vector<CorpusEntry> plan;
+  for (int i = 0; i < count; ++i) {
+    CorpusEntry entry;
+    entry.preset = names[static_cast<size_t>(i) % names.size()];
+    entry.seed = base_seed * 1000u + static_cast<uint32_t>(i);
+    entry.spec = varied_spec(preset(entry.preset), entry.seed);
+    char index[16];
+    std::snprintf(index, sizeof index, "%03d", i);
+    entry.name = entry.preset + "_" + index;
+    plan.push_back(std::move(entry));
+  }
+  return plan;
 }
 
 SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uint32_t seed,

@@ -98,6 +98,18 @@ HairStyleSpec preset(const std::string& name);
 /// `spec` with its knobs varied within plausible bounds by `seed` (the corpus).
 HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed);
 
+/// One model of a corpus: its file stem, preset, seed and varied specification.
+struct CorpusEntry {
+  std::string name;  ///< "<preset>_<index, 3 digits>"
+  std::string preset;
+  uint32_t seed = 0;
+  HairStyleSpec spec;
+};
+
+/// The models of a corpus of `count`: model i is preset i mod #presets with seed
+/// base_seed * 1000 + i, its knobs varied by that seed (varied_spec).
+std::vector<CorpusEntry> corpus_plan(int count, uint32_t base_seed);
+
 /// One patch of the mesh and its truth.
 struct SynthPatch {
   int32_t stream = -1;
