@@ -22,17 +22,6 @@ const h5::EnumMembers& orientation_rule_members() {
   return members;
 }
 
-namespace {
-
-template <class Enum>
-std::vector<int8_t> enum_values(const std::vector<Enum>& values) {
-  std::vector<int8_t> raw;
-  raw.reserve(values.size());
-  for (Enum value : values) raw.push_back(static_cast<int8_t>(value));
-  return raw;
-}
-
-}  // namespace
 
 void write_extract_file(h5::File& file, const ExtractResult& result, const ExtractParams& params) {
   h5::write_schema_attributes(file, h5::Schema::find(kExtractSchema));
@@ -45,9 +34,9 @@ void write_extract_file(h5::File& file, const ExtractResult& result, const Extra
 
   h5::write_strand_set(file, "/strands", result.strands);
 
-  h5::write_enum_dataset(file, "/groups/patch_kind", enum_values(result.group_kind),
+  h5::write_enum_dataset(file, "/groups/patch_kind", h5::enum_values(result.group_kind),
                          patch_kind_members());
-  h5::write_enum_dataset(file, "/groups/orientation_rule", enum_values(result.group_rule),
+  h5::write_enum_dataset(file, "/groups/orientation_rule", h5::enum_values(result.group_rule),
                          orientation_rule_members());
   h5::write_vector(file, "/groups/orientation_confidence", result.group_confidence);
   h5::write_vector(file, "/groups/first_strand", result.group_first_strand);

@@ -50,9 +50,7 @@ void write_types_file(h5::File& file, const GroupTypes& types, double head_heigh
                              types.connect_angle_threshold_rad);
   h5::write_string_attribute(file, "/", "connect_threshold_source",
                              types.threshold_from_distribution ? "distribution" : "parameter");
-  std::vector<int8_t> type_values;
-  for (GroupType type : types.type) type_values.push_back(static_cast<int8_t>(type));
-  h5::write_enum_dataset(file, "/groups/type", type_values, group_type_members());
+  h5::write_enum_dataset(file, "/groups/type", h5::enum_values(types.type), group_type_members());
   StrandSet centres = types.centre_strands;
   centres.strand_attributes.clear();
   centres.point_attributes.clear();

@@ -22,6 +22,15 @@ using EnumMembers = std::vector<EnumMember>;
 /// "{strip=0, grid=1}".
 std::string format_enum_members(const EnumMembers& members);
 
+/// The stored values of enum class values (over int8), as write_enum_dataset() takes them.
+template <class Enum>
+std::vector<int8_t> enum_values(const std::vector<Enum>& values) {
+  std::vector<int8_t> raw;
+  raw.reserve(values.size());
+  for (Enum value : values) raw.push_back(static_cast<int8_t>(value));
+  return raw;
+}
+
 /// Writes `values` (one per element, each the value of a member) as the 1-D dataset
 /// `path` of an HDF5 enum type over int8 with `members`. A value that is no member, or
 /// members with repeated names or values, are a runtime error.

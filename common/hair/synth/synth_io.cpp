@@ -18,14 +18,6 @@ namespace hair::synth {
 
 namespace {
 
-template <class Enum>
-std::vector<int8_t> enum_values(const std::vector<Enum>& values) {
-  std::vector<int8_t> raw;
-  raw.reserve(values.size());
-  for (Enum value : values) raw.push_back(static_cast<int8_t>(value));
-  return raw;
-}
-
 /// The members of an enum dataset, from the compiled-in schema (one place for names).
 const h5::EnumMembers& members(const std::string& path) {
   return h5::Schema::find(kSynthTruthSchema).dataset(path).enum_members;
@@ -319,10 +311,10 @@ void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale
   }
   h5::write_vector(file, "/patches/stream", stream);
   h5::write_vector(file, "/patches/index_in_stream", index_in_stream);
-  h5::write_enum_dataset(file, "/patches/group_type", enum_values(type),
+  h5::write_enum_dataset(file, "/patches/group_type", h5::enum_values(type),
                          members("/patches/group_type"));
-  h5::write_enum_dataset(file, "/patches/style", enum_values(style), members("/patches/style"));
-  h5::write_enum_dataset(file, "/patches/vertex_order", enum_values(order),
+  h5::write_enum_dataset(file, "/patches/style", h5::enum_values(style), members("/patches/style"));
+  h5::write_enum_dataset(file, "/patches/vertex_order", h5::enum_values(order),
                          members("/patches/vertex_order"));
   h5::write_vector(file, "/patches/triangulated", triangulated);
   h5::write_vector(file, "/patches/rails", rails);
@@ -332,11 +324,11 @@ void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale
   h5::write_vector(file, "/mesh/vertex_along", model.vertex_along_m);
 
   h5::write_strand_set(file, "/streams/centre", model.stream_centres);
-  h5::write_enum_dataset(file, "/streams/style", enum_values(model.stream_style),
+  h5::write_enum_dataset(file, "/streams/style", h5::enum_values(model.stream_style),
                          members("/streams/style"));
   h5::write_vector(file, "/streams/component", model.stream_component);
   h5::write_strand_set(file, "/strands", model.strands);
-  h5::write_enum_dataset(file, "/strands/point_style", enum_values(model.strand_point_style),
+  h5::write_enum_dataset(file, "/strands/point_style", h5::enum_values(model.strand_point_style),
                          members("/strands/point_style"));
 }
 
