@@ -22,7 +22,6 @@ const h5::EnumMembers& orientation_rule_members() {
   return members;
 }
 
-
 void write_extract_file(h5::File& file, const ExtractResult& result, const ExtractParams& params) {
   h5::write_schema_attributes(file, h5::Schema::find(kExtractSchema));
   h5::write_string_attribute(file, "/", "unit", "m");
