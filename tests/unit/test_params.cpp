@@ -53,6 +53,16 @@ std::string usage_message(const std::function<void()>& action) {
   return "";
 }
 
+/// The usage error of reading ExampleParams from the parameter file `path`.
+std::string usage_message_for_file(const std::string& path) {
+  CLI::App app;
+  app.set_config("--params");
+  hair::ParamSet params(app);
+  ExampleParams values;
+  values.bind(params);
+  return usage_message([&] { parse(app, {"--params", path}); });
+}
+
 TEST_F(ParamsTest, DefaultsStayWithoutFileOrOptions) {
   CLI::App app;
   hair::ParamSet params(app);
@@ -123,15 +133,7 @@ TEST_F(ParamsTest, OutOfRangeNamesParameterValueAndRange) {
 }
 
 TEST_F(ParamsTest, OutOfRangeInFileIsRejected) {
-  const std::string path = write_file("params.toml", "spacing_m = 0.0\n");
-  CLI::App app;
-  app.set_config("--params");
-  hair::ParamSet params(app);
-  ExampleParams values;
-  values.bind(params);
-  EXPECT_EQ(usage_message([&] {
-              parse(app, {"--params", path});
-            }),
+  EXPECT_EQ(usage_message_for_file(write_file("params.toml", "spacing_m = 0.0\n")),
             "parameter spacing_m = 0.0 is out of range (0, inf)");
 }
 
@@ -154,15 +156,7 @@ TEST_F(ParamsTest, WrongTypesNameTheParameter) {
 }
 
 TEST_F(ParamsTest, WrongTypeInFileNamesTheParameter) {
-  const std::string path = write_file("params.toml", "k1 = \"abc\"\n");
-  CLI::App app;
-  app.set_config("--params");
-  hair::ParamSet params(app);
-  ExampleParams values;
-  values.bind(params);
-  EXPECT_EQ(usage_message([&] {
-              parse(app, {"--params", path});
-            }),
+  EXPECT_EQ(usage_message_for_file(write_file("params.toml", "k1 = \"abc\"\n")),
             "parameter k1 = \"abc\" is not a number");
 }
 
