@@ -16,7 +16,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   # libraries (find_package / find_library in CMakeLists.txt)
   libeigen3-dev libassimp-dev libhdf5-dev libcli11-dev libspdlog-dev libfmt-dev
-  libnanoflann-dev nlohmann-json3-dev libssl-dev
+  libnanoflann-dev nlohmann-json3-dev libssl-dev libspectra-dev
   libopencv-imgproc-dev libopencv-imgcodecs-dev
   # tests
   libgtest-dev libgmock-dev
