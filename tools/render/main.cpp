@@ -1,22 +1,85 @@
-// hair-render: a picture of what a stage produced, e.g. the input strands of
-// extract.h5 coloured by group, root-to-tip direction, orientation rule or patch kind.
+// hair-render: a picture of what a stage produced: the input strands of extract.h5
+// coloured by group, root-to-tip direction, orientation rule or patch kind; with
+// --extract, the same strands coloured by the group types of types.h5, the middle
+// clusters of middle.h5 or the hair clusters of clusters.h5. The file's `schema`
+// attribute says which it is.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "hair/clustering_io.h"
 #include "hair/error.h"
+#include "hair/extract_io.h"
+#include "hair/h5/attribute.h"
 #include "hair/h5/file.h"
+#include "hair/render/cluster_picture.h"
 #include "hair/render/extract_picture.h"
+#include "hair/typeify_io.h"
+
+namespace {
+
+/// The picture of `file` by the schema it names; an empty `colouring` is the file's
+/// default, an empty title in `options` names the file and the colouring.
+cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
+                const std::string& colouring, hair::RenderOptions options) {
+  if (!hair::h5::has_attribute(file, "/", "schema"))
+    throw hair::Error::bad_input(file.name(), "has no schema attribute: not a hairstyle file");
+  std::string schema = hair::h5::read_string_attribute(file, "/", "schema");
+  // The colouring asked for or `fallback`, named in the default title.
+  auto colour_word = [&](const std::string& fallback) {
+    std::string word = colouring.empty() ? fallback : colouring;
+    if (options.title.empty()) options.title = file.name() + " (" + word + ")";
+    return word;
+  };
+  if (schema == hair::kExtractSchema) {
+    if (!extract_path.empty())
+      throw hair::Error::usage("--extract is for types.h5, middle.h5 and clusters.h5, not " +
+                               file.name() + " (" + schema + ")");
+    hair::ExtractColouring how = hair::parse_extract_colouring(colour_word("group"));
+    return hair::extract_picture(file, how, options);
+  }
+  if (schema != hair::kTypesSchema && schema != hair::kMiddleSchema &&
+      schema != hair::kClustersSchema)
+    throw hair::Error::bad_input(file.name(), "schema '" + schema +
+                                                  "' is not one hair-render draws (extract, "
+                                                  "types, middle or clusters)");
+  if (extract_path.empty())
+    throw hair::Error::usage(file.name() + " (" + schema +
+                             ") needs --extract: the extract.h5 it was made from");
+  if (!colouring.empty() && schema != hair::kClustersSchema)
+    throw hair::Error::usage("--color-by is for extract.h5 and clusters.h5, not " + file.name() +
+                             " (" + schema + ")");
+  hair::h5::File extract = hair::h5::File::open_read_only(extract_path);
+  if (schema == hair::kTypesSchema) {
+    colour_word("type");
+    return hair::types_picture(file, extract, options);
+  }
+  if (schema == hair::kMiddleSchema) {
+    colour_word("middle cluster");
+    return hair::middle_picture(file, extract, options);
+  }
+  bool before_split = hair::parse_cluster_colouring(colour_word("cluster"));
+  return hair::clusters_picture(file, extract, options, before_split);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app("Render a hairstyle HDF5 file as a PNG (front, side and back views).",
                "hair-render");
-  std::string input_path, output_path, colouring = "group", title, extract_path;
+  std::string input_path, output_path, colouring, title, extract_path;
   int size_px = 512;
   bool no_body = false;
-  app.add_option("FILE", input_path, "extract.h5, or types.h5 with --extract")->required();
-  app.add_option("--extract", extract_path, "the extract.h5 a types.h5 was made from");
+  app.add_option("FILE", input_path,
+                 "extract.h5; or, with --extract, types.h5, middle.h5 or clusters.h5")
+      ->required();
+  app.add_option("--extract", extract_path,
+                 "the extract.h5 that types.h5, middle.h5 or clusters.h5 was made from");
   app.add_option("-o,--output", output_path, "PNG to write")->required();
-  app.add_option("--color-by", colouring, "group, direction, rule or kind");
+  app.add_option("--color-by", colouring,
+                 "extract.h5: group (default), direction, rule or kind; clusters.h5: cluster "
+                 "(default, the final clusters) or before_split (as spectral clustering found "
+                 "them). types.h5 is coloured by type, middle.h5 by middle cluster (other "
+                 "groups grey)");
   app.add_option("--size", size_px, "pixels per view")->check(CLI::Range(64, 4096));
   app.add_option("--title", title, "text at the top left (default: the file and colouring)");
   app.add_flag("--no-body", no_body, "do not draw the body (it still hides what is behind it)");
@@ -31,16 +94,9 @@ int main(int argc, char** argv) {
     hair::RenderOptions options;
     options.view_size_px = size_px;
     options.draw_body = !no_body;
-    options.title = title.empty() ? input_path + " (" + colouring + ")" : title;
+    options.title = title;
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
-    cv::Mat image;
-    if (extract_path.empty()) {
-      image = hair::extract_picture(file, hair::parse_extract_colouring(colouring), options);
-    } else {
-      if (title.empty()) options.title = input_path + " (type)";
-      image = hair::types_picture(file, hair::h5::File::open_read_only(extract_path), options);
-    }
-    hair::write_png(image, output_path);
+    hair::write_png(picture(file, extract_path, colouring, options), output_path);
   } catch (const hair::Error& e) {
     std::cerr << "hair-render: error: " << e.what() << "\n";
     return e.exit_code();
