@@ -48,8 +48,9 @@ TEST_F(H5InspectReportTest, NamedSchemaMustBeTheFilesAndKnown) {
   const InspectReport by_file = inspect_report(file, true);
   // The known schemas are listed in name order; the list grows with schemas/.
   const std::string expected_start =
-      "plain.h5:/@schema: unknown schema 'hairstyle.other' (known: hairstyle.extract";
+      "plain.h5:/@schema: unknown schema 'hairstyle.other' (known: hairstyle.";
   EXPECT_EQ(by_file.violation->substr(0, expected_start.size()), expected_start);
+  EXPECT_NE(by_file.violation->find("hairstyle.extract"), std::string::npos);
   EXPECT_EQ(by_file.violation->back(), ')');
 }
 

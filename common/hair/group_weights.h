@@ -1,0 +1,71 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "hair/strand_set.h"
+
+namespace hair {
+
+/// Which directions equation (3) compares at a connection.
+enum class FlowDirection {
+  /// The paper's: c^r from its point farthest from its chord to its end, c^t from its
+  /// start to its farthest point (half a strand on a bent one).
+  farthest_point,
+  /// The last quarter of c^r and the first quarter of c^t: the flow at the connection
+  /// itself, which short pieces of a weaving braid need (their halves point apart).
+  end_quarter,
+};
+
+/// Settings of the connectivity weight (paper, section 4.2, equations 1-3). The weight
+/// w = k1 f1 + k2 f2 + k3 f3 is a cost: 0 is the best connection. Outside the bounds
+/// the weight is infinite: no edge.
+struct ConnectivityParams {
+  double k1 = 0.8;       ///< coefficient of f1 (closeness at the connection)
+  double k2 = 0.1;       ///< coefficient of f2 (overlap)
+  double k3 = 0.1;       ///< coefficient of f3 (flow angle); k1 + k2 + k3 = 1
+  double f1_max = 0.25;  ///< the paper's bound H/4, f1 being in units of H
+  double f2_max = 0.5;   ///< the paper's bound
+  /// The paper's bound is 0.3 (54 degrees); consecutive pieces of a tight braid turn by
+  /// more (synthetic braids: median 56 degrees across a junction), so 0.6.
+  double f3_max = 0.6;
+  FlowDirection flow_direction = FlowDirection::end_quarter;
+};
+
+/// Settings of the similarity weight between free-root groups (section 4.3, equations
+/// 4 and 5): w = (|p(c_1^i) - p(c_1^j)| + |p(c_M^i) - p(c_M^j)|) / (2 H), an edge only
+/// when both distances are under `distance_max_h` H.
+struct SimilarityParams {
+  double distance_max_h = 0.25;
+};
+
+/// The three criteria between two centre strands (each #points x 3, root first).
+struct ConnectionFeatures {
+  bool first_is_root_side = true;  ///< the first strand is c^r, the second c^t
+  double f1 = 0;  ///< closest approach of c^r's distal half to c^t's proximal half, in H
+  double f2 = 0;  ///< |v_rt . v_tt| / |v_tt|^2: how far c^r's end lies along c^t
+  double f3 = 0;  ///< angle between c^r's flow into its end and c^t's flow out of its start, / pi
+};
+
+/// Index of the point of `centre` farthest from the chord between its first and last
+/// points, among the inner points; the middle point when the strand is straight.
+int farthest_from_chord(const Eigen::Ref<const Points3f>& centre);
+
+/// Equations (1)-(3) for centre strands `a` and `b`. Their order (which is c^r) is
+/// decided by the distances from the end of one to the start of the other: the pair
+/// with the shorter gap runs a -> b (a is c^r) or b -> a.
+ConnectionFeatures connection_features(
+    const Eigen::Ref<const Points3f>& a, const Eigen::Ref<const Points3f>& b, double head_height_m,
+    FlowDirection flow_direction = FlowDirection::farthest_point);
+
+/// The connectivity weight of `features`, or nullopt (infinite: no edge) when a
+/// criterion is at or beyond its bound.
+std::optional<double> connectivity_weight(const ConnectionFeatures& features,
+                                          const ConnectivityParams& params);
+
+/// The similarity weight of two free-root centre strands, or nullopt (no edge).
+std::optional<double> similarity_weight(const Eigen::Ref<const Points3f>& a,
+                                        const Eigen::Ref<const Points3f>& b, double head_height_m,
+                                        const SimilarityParams& params);
+
+}  // namespace hair

@@ -1,0 +1,103 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hair/group_graph.h"
+#include "hair/group_weights.h"
+#include "hair/spectral_clustering.h"
+#include "hair/strand_set.h"
+#include "hair/typeify.h"
+
+namespace hair {
+
+/// How the number of clusters of a clustering was set.
+enum class ClusterCountSource { eigengap, parameter, skipped };
+const char* cluster_count_source_name(ClusterCountSource source);
+
+/// Settings shared by both clustering levels.
+struct GraphClusteringParams {
+  ConnectivityParams connectivity;
+  /// Halve w_ij when it is the smallest weight from group i to a group on its tip side
+  /// (section 4.2, "a heuristic emphasizing the local similarity").
+  bool halve_best_tip_side = true;
+  /// Connect two groups whichever way extract oriented them: the weight is the best
+  /// over both directions of each. Pieces read tip to root (extract gets about one in
+  /// five braid pieces wrong) then still chain with their neighbours.
+  bool either_orientation = true;
+  /// Keep a connection only when it ranks among the `continuations` best at both group
+  /// ends it joins (a mutual nearest-neighbour graph over group ends); 0 keeps every
+  /// connection within the bounds (the paper's complete graph). Strand streams are
+  /// chains: in a braid every piece also lies within the bounds of pieces of the other
+  /// streams, and on the complete graph spectral clustering cuts the braid across
+  /// instead of separating its streams.
+  int continuations = 1;
+  /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight.
+  double affinity_scale = 0;
+  SpectralParams spectral;
+};
+
+/// Result of the first level: clusters of middle-type groups (section 4.2).
+struct MiddleClustering {
+  std::vector<int32_t> middle_cluster;  ///< per group; -1 for groups not middle-type
+  int32_t cluster_count = 0;
+  ClusterCountSource count_source = ClusterCountSource::skipped;
+  GroupGraph graph;                 ///< over group ids
+  std::vector<double> eigenvalues;  ///< leading, descending
+};
+
+/// Spectral clustering of the middle-type groups over a graph weighted by
+/// connectivity (equations 1-3). No middle groups: an empty result, `skipped`.
+///
+/// @param centres  centre strand of every group (types.h5 /centre_strands), root first
+MiddleClustering cluster_middle_groups(const StrandSet& centres,
+                                       const std::vector<GroupType>& types, double head_height_m,
+                                       const GraphClusteringParams& params);
+
+/// Settings of the second level. Its graph keeps every connection within the bounds
+/// (continuations = 0, the paper's complete graph): at this level clusters are regions
+/// of hair (a braid with its streams, a ponytail's tail), not single streams.
+struct HairClusteringParams {
+  HairClusteringParams() { graph.continuations = 0; }
+  GraphClusteringParams graph;
+  SimilarityParams similarity;
+  /// Divide a cluster where the type changes from root to another type (section 4.3).
+  bool split_at_type_change = true;
+};
+
+/// Result of the second level: every group in a hair cluster (section 4.3).
+struct HairClustering {
+  std::vector<int32_t> node_of_group;           ///< per group
+  std::vector<int32_t> cluster_before_split;    ///< per group
+  std::vector<int32_t> cluster;                 ///< per group, final
+  std::vector<uint8_t> node_in_s1;              ///< per node: a free-root group
+  std::vector<int32_t> node_middle_cluster;     ///< per node: its middle cluster or -1
+  std::vector<int32_t> cluster_origin;          ///< per final cluster: its cluster before split
+  std::vector<uint8_t> cluster_starts_at_root;  ///< per final cluster
+  std::vector<int32_t> cluster_group_count;     ///< per final cluster
+  int32_t clusters_before_split = 0;
+  int32_t split_count = 0;
+  ClusterCountSource count_source = ClusterCountSource::skipped;
+  GroupGraph graph;  ///< over nodes
+  std::vector<double> eigenvalues;
+};
+
+/// Algorithm 2's second level. Nodes: each free-root group (S1), each other root or
+/// tip group, and each middle cluster (S2). S1-S1 edges by similarity (equations 4-5),
+/// S2-S2 edges by connectivity (1-3; between nodes of several groups the smallest
+/// weight of their groups' pairs), no S1-S2 edges. Then spectral clustering and the
+/// division of clusters at the change from root-type groups to the others.
+///
+/// @param middle_cluster  per group, from cluster_middle_groups(); every middle group
+///                        must have one (each_middle_group_alone() for one level only)
+HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupType>& types,
+                            const std::vector<int32_t>& middle_cluster, double head_height_m,
+                            const HairClusteringParams& params);
+
+/// A middle clustering that puts every middle group in a cluster of its own: with it,
+/// cluster_hair() is one-level spectral clustering over all groups (the baseline the
+/// paper says fails on braids).
+std::vector<int32_t> each_middle_group_alone(const std::vector<GroupType>& types);
+
+}  // namespace hair

@@ -1,0 +1,162 @@
+// Two-level spectral clustering (cluster-middle, cluster-all) measured against the
+// truth of synthetic hairstyles, printed as tables (docs/clustering.md): the adjusted
+// Rand index (ARI) of the middle clustering against the true streams of the groups
+// it clustered, and of the final clustering (before the division at type changes)
+// against the true streams, two-level against one-level, with typeify's types and
+// with the true types.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "hair/adjusted_rand_index.h"
+#include "hair/extract.h"
+#include "hair/hair_clustering.h"
+#include "hair/mesh_io.h"
+#include "hair/synth/synth_eval.h"
+#include "hair/synth/synth_model.h"
+#include "hair/typeify.h"
+
+namespace hair::synth {
+namespace {
+
+constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+
+/// ARIs of one model; NaN where there was nothing to measure.
+struct ClusteringScores {
+  double middle = kNotMeasured;     ///< middle clusters vs true streams, over the groups clustered
+  double two_level = kNotMeasured;  ///< final (before split) vs true streams, chained streams
+  double one_level = kNotMeasured;  ///< the same with no middle clustering first
+  double two_level_components = kNotMeasured;  ///< final vs true components, all groups
+  double one_level_components = kNotMeasured;
+  int middle_groups = 0, chained_groups = 0;
+};
+
+/// Labels of `values` at `items`.
+std::vector<int32_t> pick(const std::vector<int32_t>& values, const std::vector<int32_t>& items) {
+  std::vector<int32_t> picked;
+  for (int32_t item : items) picked.push_back(values[static_cast<size_t>(item)]);
+  return picked;
+}
+
+ClusteringScores score(const SynthModel& model, const ExtractResult& extract,
+                       const std::vector<hair::GroupType>& types, const StrandSet& centres) {
+  std::vector<int32_t> patch_of = group_patches(model, extract);
+  std::vector<int32_t> stream(patch_of.size(), -1), component(patch_of.size(), -1);
+  std::vector<int> patches_in_stream(model.patches.size() + 1, 0);
+  for (const SynthPatch& patch : model.patches)
+    ++patches_in_stream[static_cast<size_t>(patch.stream)];
+  for (size_t g = 0; g < patch_of.size(); ++g)
+    if (patch_of[g] >= 0) {
+      stream[g] = model.patches[static_cast<size_t>(patch_of[g])].stream;
+      component[g] = model.stream_component[static_cast<size_t>(stream[g])];
+    }
+
+  double h = extract.head.head_height;
+  HairClusteringParams params;
+  MiddleClustering middle = cluster_middle_groups(centres, types, h, GraphClusteringParams{});
+  HairClustering two = cluster_hair(centres, types, middle.middle_cluster, h, params);
+  HairClustering one = cluster_hair(centres, types, each_middle_group_alone(types), h, params);
+
+  ClusteringScores scores;
+  std::vector<int32_t> middle_items, chained_items, all_items;
+  for (size_t g = 0; g < types.size(); ++g) {
+    if (stream[g] < 0) continue;
+    all_items.push_back(static_cast<int32_t>(g));
+    if (types[g] == hair::GroupType::middle) middle_items.push_back(static_cast<int32_t>(g));
+    if (patches_in_stream[static_cast<size_t>(stream[g])] > 1)
+      chained_items.push_back(static_cast<int32_t>(g));
+  }
+  scores.middle_groups = static_cast<int>(middle_items.size());
+  scores.chained_groups = static_cast<int>(chained_items.size());
+  if (middle_items.size() > 1)
+    scores.middle =
+        adjusted_rand_index(pick(middle.middle_cluster, middle_items), pick(stream, middle_items));
+  if (chained_items.size() > 1) {
+    scores.two_level = adjusted_rand_index(pick(two.cluster_before_split, chained_items),
+                                           pick(stream, chained_items));
+    scores.one_level = adjusted_rand_index(pick(one.cluster_before_split, chained_items),
+                                           pick(stream, chained_items));
+  }
+  if (all_items.size() > 1) {
+    scores.two_level_components =
+        adjusted_rand_index(pick(two.cluster_before_split, all_items), pick(component, all_items));
+    scores.one_level_components =
+        adjusted_rand_index(pick(one.cluster_before_split, all_items), pick(component, all_items));
+  }
+  return scores;
+}
+
+/// Mean of the measured values of a column (NaN when none was).
+struct Column {
+  double sum = 0;
+  int count = 0;
+  void add(double value) {
+    if (!std::isnan(value)) sum += value, ++count;
+  }
+  double mean() const { return count ? sum / count : kNotMeasured; }
+};
+
+struct Row {
+  Column middle, two_level, one_level, two_components, one_components, true_middle, true_two_level,
+      true_one_level;
+  void add(const ClusteringScores& found, const ClusteringScores& truth) {
+    middle.add(found.middle);
+    two_level.add(found.two_level);
+    one_level.add(found.one_level);
+    two_components.add(found.two_level_components);
+    one_components.add(found.one_level_components);
+    true_middle.add(truth.middle);
+    true_two_level.add(truth.two_level);
+    true_one_level.add(truth.one_level);
+  }
+  void print(const std::string& label) const {
+    std::printf("[ synth    ] %-15s | %6.3f %6.3f %6.3f %6.3f %6.3f | %6.3f %6.3f %6.3f\n",
+                label.c_str(), middle.mean(), two_level.mean(), one_level.mean(),
+                two_components.mean(), one_components.mean(), true_middle.mean(),
+                true_two_level.mean(), true_one_level.mean());
+  }
+};
+
+TEST(SynthClustering, AdjustedRandIndexPerPreset) {
+  PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+  body.vertices *= 0.1f;
+  std::printf("[ synth    ] %-15s | typeify's types:                  | true types:\n", "");
+  std::printf("[ synth    ] %-15s | middle  2L-st  1L-st 2L-cmp 1L-cmp | middle  2L-st  1L-st\n",
+              "preset");
+  Row braided, all;
+  for (const std::string& name : preset_names()) {
+    Row row;
+    for (uint32_t seed : {1u, 2u, 3u}) {
+      SynthModel model = generate_model(varied_spec(preset(name), seed), body, seed, 2);
+      ExtractResult extract = extract_strands(model.mesh, body, ExtractParams{}, name, "body");
+      GroupTypes found = group_types(extract.strands, extract.group_first_strand,
+                                     extract.head.head_height, TypeifyParams{});
+      ClusteringScores with_found = score(model, extract, found.type, found.centre_strands);
+      std::vector<int32_t> patch_of = group_patches(model, extract);
+      std::vector<hair::GroupType> truth = found.type;
+      for (size_t g = 0; g < truth.size(); ++g)
+        if (patch_of[g] >= 0)
+          truth[g] = static_cast<hair::GroupType>(
+              static_cast<int8_t>(model.patches[static_cast<size_t>(patch_of[g])].type));
+      ClusteringScores with_truth = score(model, extract, truth, found.centre_strands);
+      row.add(with_found, with_truth);
+      all.add(with_found, with_truth);
+      if (name.find("braid") != std::string::npos) braided.add(with_found, with_truth);
+    }
+    row.print(name);
+  }
+  braided.print("braided presets");
+  all.print("all");
+  // Measured (docs/clustering.md): middle ARI 0.62 over the braided presets, 0.66 over
+  // all. A floor that catches a broken clustering, not the target (0.9, not reached).
+  EXPECT_GT(braided.middle.mean(), 0.4);
+  EXPECT_GT(all.middle.mean(), 0.5);
+}
+
+}  // namespace
+}  // namespace hair::synth
