@@ -18,6 +18,14 @@ void add_graph_clustering_params(ParamSet& params, GraphClusteringParams& values
              ParamRange::above(0));
   params.add("f3_max", c.f3_max, "no edge when the flow angle f3 (in pi) reaches this bound",
              ParamRange::closed(0, 1));
+  params.add("closeness", values.closeness_word,
+             "f1 as the closest approach of one group's distal half to the other's proximal "
+             "half (halves, the paper's) or as the gap between the end and the start (ends)",
+             {"halves", "ends"});
+  params.add("flow_direction", values.flow_direction_word,
+             "f3 between the flows from the farthest point off the chord (farthest_point, "
+             "the paper's) or over the quarters at the connection (end_quarter)",
+             {"farthest_point", "end_quarter"});
   params.add("halve_best_tip_side", values.halve_best_tip_side,
              "halve the weight from a group to its best-connected group on the tip side "
              "(the paper's local-similarity heuristic)");
@@ -49,6 +57,12 @@ void add_graph_clustering_params(ParamSet& params, GraphClusteringParams& values
              ParamRange::closed(1, 1000));
   params.add("kmeans_iterations", s.kmeans.max_iterations, "iterations of one k-means run",
              ParamRange::closed(1, 100000));
+  params.add_check([&values]() -> std::optional<std::string> {
+    // The words were checked against their lists on parsing.
+    values.connectivity.closeness = *closeness_from_name(values.closeness_word);
+    values.connectivity.flow_direction = *flow_direction_from_name(values.flow_direction_word);
+    return std::nullopt;
+  });
   params.add_check([&c]() -> std::optional<std::string> {
     double sum = c.k1 + c.k2 + c.k3;
     if (std::abs(sum - 1) > 1e-6) return "k1 + k2 + k3 must be 1, found " + std::to_string(sum);

@@ -43,7 +43,7 @@ int farthest_from_chord(const Eigen::Ref<const Points3f>& centre) {
 
 ConnectionFeatures connection_features(const Eigen::Ref<const Points3f>& a,
                                        const Eigen::Ref<const Points3f>& b, double head_height_m,
-                                       FlowDirection flow_direction) {
+                                       FlowDirection flow_direction, Closeness closeness) {
   ConnectionFeatures features;
   double a_to_b = (point(a, a.rows() - 1) - point(b, 0)).norm();
   double b_to_a = (point(b, b.rows() - 1) - point(a, 0)).norm();
@@ -52,11 +52,12 @@ ConnectionFeatures connection_features(const Eigen::Ref<const Points3f>& a,
   const auto& tip = features.first_is_root_side ? b : a;
   Eigen::Index root_points = root.rows(), tip_points = tip.rows();
 
-  // (1): m over the distal half of c^r, n over the proximal half of c^t.
-  double closest2 = std::numeric_limits<double>::infinity();
-  for (Eigen::Index m = root_points / 2; m < root_points; ++m)
-    for (Eigen::Index n = 0; n < (tip_points + 1) / 2; ++n)
-      closest2 = std::min(closest2, (point(root, m) - point(tip, n)).squaredNorm());
+  // (1): m over the distal half of c^r, n over the proximal half of c^t; or the ends.
+  double closest2 = (point(root, root_points - 1) - point(tip, 0)).squaredNorm();
+  if (closeness == Closeness::halves)
+    for (Eigen::Index m = root_points / 2; m < root_points; ++m)
+      for (Eigen::Index n = 0; n < (tip_points + 1) / 2; ++n)
+        closest2 = std::min(closest2, (point(root, m) - point(tip, n)).squaredNorm());
   features.f1 = std::sqrt(closest2) / head_height_m;
 
   // (2): v_rt = p(c^r_M) - p(c^t_1), v_tt = p(c^t_M) - p(c^t_1).
@@ -96,6 +97,26 @@ std::optional<double> similarity_weight(const Eigen::Ref<const Points3f>& a,
   double tips = (point(a, a.rows() - 1) - point(b, b.rows() - 1)).norm() / head_height_m;  // (5)
   if (!(roots < params.distance_max_h && tips < params.distance_max_h)) return std::nullopt;
   return (roots + tips) / 2;
+}
+
+const char* flow_direction_name(FlowDirection direction) {
+  return direction == FlowDirection::farthest_point ? "farthest_point" : "end_quarter";
+}
+
+const char* closeness_name(Closeness closeness) {
+  return closeness == Closeness::halves ? "halves" : "ends";
+}
+
+std::optional<FlowDirection> flow_direction_from_name(const std::string& name) {
+  for (FlowDirection direction : {FlowDirection::farthest_point, FlowDirection::end_quarter})
+    if (name == flow_direction_name(direction)) return direction;
+  return std::nullopt;
+}
+
+std::optional<Closeness> closeness_from_name(const std::string& name) {
+  for (Closeness closeness : {Closeness::halves, Closeness::ends})
+    if (name == closeness_name(closeness)) return closeness;
+  return std::nullopt;
 }
 
 }  // namespace hair

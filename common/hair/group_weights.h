@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 
 #include "hair/strand_set.h"
 
@@ -17,20 +18,37 @@ enum class FlowDirection {
   end_quarter,
 };
 
+/// What equation (1) measures between the two strands.
+enum class Closeness {
+  /// The paper's: the closest approach of c^r's distal half to c^t's proximal half.
+  halves,
+  /// The gap between c^r's last point and c^t's first: in a braid, pieces of the other
+  /// streams cross the distal half of a piece, closer than its own continuation.
+  ends,
+};
+
 /// Settings of the connectivity weight (paper, section 4.2, equations 1-3). The weight
 /// w = k1 f1 + k2 f2 + k3 f3 is a cost: 0 is the best connection. Outside the bounds
 /// the weight is infinite: no edge.
 struct ConnectivityParams {
-  double k1 = 0.8;       ///< coefficient of f1 (closeness at the connection)
-  double k2 = 0.1;       ///< coefficient of f2 (overlap)
-  double k3 = 0.1;       ///< coefficient of f3 (flow angle); k1 + k2 + k3 = 1
+  double k1 = 0.9;       ///< coefficient of f1 (closeness at the connection)
+  double k2 = 0.05;      ///< coefficient of f2 (overlap)
+  double k3 = 0.05;      ///< coefficient of f3 (flow angle); k1 + k2 + k3 = 1
   double f1_max = 0.25;  ///< the paper's bound H/4, f1 being in units of H
   double f2_max = 0.5;   ///< the paper's bound
   /// The paper's bound is 0.3 (54 degrees); consecutive pieces of a tight braid turn by
   /// more (synthetic braids: median 56 degrees across a junction), so 0.6.
   double f3_max = 0.6;
   FlowDirection flow_direction = FlowDirection::end_quarter;
+  Closeness closeness = Closeness::ends;
 };
+
+/// The words of the enumerations above, as parameter files write them.
+const char* flow_direction_name(FlowDirection direction);
+const char* closeness_name(Closeness closeness);
+/// The value of a word; std::nullopt for an unknown word.
+std::optional<FlowDirection> flow_direction_from_name(const std::string& name);
+std::optional<Closeness> closeness_from_name(const std::string& name);
 
 /// Settings of the similarity weight between free-root groups (section 4.3, equations
 /// 4 and 5): w = (|p(c_1^i) - p(c_1^j)| + |p(c_M^i) - p(c_M^j)|) / (2 H), an edge only
@@ -54,9 +72,10 @@ int farthest_from_chord(const Eigen::Ref<const Points3f>& centre);
 /// Equations (1)-(3) for centre strands `a` and `b`. Their order (which is c^r) is
 /// decided by the distances from the end of one to the start of the other: the pair
 /// with the shorter gap runs a -> b (a is c^r) or b -> a.
-ConnectionFeatures connection_features(
-    const Eigen::Ref<const Points3f>& a, const Eigen::Ref<const Points3f>& b, double head_height_m,
-    FlowDirection flow_direction = FlowDirection::farthest_point);
+ConnectionFeatures connection_features(const Eigen::Ref<const Points3f>& a,
+                                       const Eigen::Ref<const Points3f>& b, double head_height_m,
+                                       FlowDirection flow_direction = FlowDirection::farthest_point,
+                                       Closeness closeness = Closeness::halves);
 
 /// The connectivity weight of `features`, or nullopt (infinite: no edge) when a
 /// criterion is at or beyond its bound.

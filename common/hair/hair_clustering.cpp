@@ -54,7 +54,7 @@ std::optional<GroupConnection> best_connection(const StrandSet& centres, const S
     for (int h_reversed = 0; h_reversed < directions; ++h_reversed) {
       ConnectionFeatures features = connection_features(
           (g_reversed ? reversed : centres).strand(g), (h_reversed ? reversed : centres).strand(h),
-          head_height_m, params.connectivity.flow_direction);
+          head_height_m, params.connectivity.flow_direction, params.connectivity.closeness);
       std::optional<double> weight = connectivity_weight(features, params.connectivity);
       if (!weight || (best && *weight >= best->weight)) continue;
       // As oriented, c^r meets c^t with its last point and c^t with its first.

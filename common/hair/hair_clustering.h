@@ -19,6 +19,10 @@ const char* cluster_count_source_name(ClusterCountSource source);
 /// Settings shared by both clustering levels.
 struct GraphClusteringParams {
   ConnectivityParams connectivity;
+  /// The words of connectivity.flow_direction and connectivity.closeness, as the
+  /// parameter file gives them (add_graph_clustering_params() reads them into the enums).
+  std::string flow_direction_word = flow_direction_name(connectivity.flow_direction);
+  std::string closeness_word = closeness_name(connectivity.closeness);
   /// Halve w_ij when it is the smallest weight from group i to a group on its tip side
   /// (section 4.2, "a heuristic emphasizing the local similarity").
   bool halve_best_tip_side = true;

@@ -125,7 +125,7 @@ TEST(ClusterCli, WrongInputsFailCleanly) {
       {"cluster-middle", {(directory / "missing.h5").string()}, "missing.h5"},
       {"cluster-middle", {(directory / "text.h5").string()}, "text.h5"},
       {"cluster-middle", {out.extract.string()}, "hairstyle.types"},
-      {"cluster-middle", {out.types.string(), "--k1", "0.9"}, "k1 + k2 + k3"},
+      {"cluster-middle", {out.types.string(), "--k1", "0.5"}, "k1 + k2 + k3"},
       {"cluster-middle", {out.types.string(), "--f3_max", "2"}, "f3_max"},
       {"cluster-all", {out.types.string(), out.types.string()}, "hairstyle.middle"},
       {"cluster-all", {out.middle.string(), out.middle.string()}, "hairstyle.types"},

@@ -128,10 +128,11 @@ TEST(SynthClustering, AdjustedRandIndexPerPreset) {
   std::printf("[ synth    ] %-15s | typeify's types:                  | true types:\n", "");
   std::printf("[ synth    ] %-15s | middle  2L-st  1L-st 2L-cmp 1L-cmp | middle  2L-st  1L-st\n",
               "preset");
-  Row braided, all;
+  // Seeds 1-3 chose the defaults (docs/clustering.md); seeds 4-6 are held out.
+  Row braided, all, held_out_braided, held_out_all;
   for (const std::string& name : preset_names()) {
     Row row;
-    for (uint32_t seed : {1u, 2u, 3u}) {
+    for (uint32_t seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
       SynthModel model = generate_model(varied_spec(preset(name), seed), body, seed, 2);
       ExtractResult extract = extract_strands(model.mesh, body, ExtractParams{}, name, "body");
       GroupTypes found = group_types(extract.strands, extract.group_first_strand,
@@ -144,18 +145,24 @@ TEST(SynthClustering, AdjustedRandIndexPerPreset) {
           truth[g] = static_cast<hair::GroupType>(
               static_cast<int8_t>(model.patches[static_cast<size_t>(patch_of[g])].type));
       ClusteringScores with_truth = score(model, extract, truth, found.centre_strands);
-      row.add(with_found, with_truth);
-      all.add(with_found, with_truth);
-      if (name.find("braid") != std::string::npos) braided.add(with_found, with_truth);
+      bool held_out = seed > 3;
+      bool braid = name.find("braid") != std::string::npos;
+      if (!held_out) row.add(with_found, with_truth);
+      (held_out ? held_out_all : all).add(with_found, with_truth);
+      if (braid) (held_out ? held_out_braided : braided).add(with_found, with_truth);
     }
     row.print(name);
   }
   braided.print("braided presets");
   all.print("all");
-  // Measured (docs/clustering.md): middle ARI 0.66 over the braided presets, 0.67 over
-  // all. A floor that catches a broken clustering, not the target (0.9, not reached).
-  EXPECT_GT(braided.middle.mean(), 0.4);
-  EXPECT_GT(all.middle.mean(), 0.5);
+  held_out_braided.print("braided, 4-6");
+  held_out_all.print("all, seeds 4-6");
+  // Measured (docs/clustering.md): middle ARI 0.78 over the braided presets (0.91 with the
+  // true types), 0.79 over all; held out: 0.66 and 0.79. Floors that catch a broken
+  // clustering, not the target (0.9 with typeify's types, not reached).
+  EXPECT_GT(braided.middle.mean(), 0.6);
+  EXPECT_GT(all.middle.mean(), 0.65);
+  EXPECT_GT(held_out_braided.middle.mean(), 0.5);
 }
 
 }  // namespace
