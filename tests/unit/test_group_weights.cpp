@@ -90,6 +90,32 @@ TEST(GroupWeights, FlowAngleUsesTheFarthestPointFromTheChord) {
   EXPECT_NEAR(f.f3, 0.25, 1e-3);
 }
 
+TEST(GroupWeights, EndGapIgnoresAPieceCrossingTheDistalHalf) {
+  // A piece crossing the upper one's distal half, as the pieces of a braid's other
+  // streams do: the paper's f1 (closest approach of the halves) is small, the gap
+  // between the upper piece's end and the piece's start is not.
+  Points3f upper = straight({0, 0, 0}, {0, -0.1f, 0});
+  Points3f crossing = straight({0.01f, -0.07f, 0}, {-0.01f, -0.17f, 0});
+  ConnectionFeatures halves = connection_features(upper, crossing, kHeadHeight,
+                                                  FlowDirection::end_quarter, Closeness::halves);
+  ConnectionFeatures ends = connection_features(upper, crossing, kHeadHeight,
+                                                FlowDirection::end_quarter, Closeness::ends);
+  EXPECT_TRUE(ends.first_is_root_side);
+  EXPECT_LT(halves.f1, 0.03);
+  EXPECT_NEAR(ends.f1, std::hypot(0.01, 0.03) / kHeadHeight, 1e-5);
+  // Both agree on a true continuation with a gap (its closest points are the ends).
+  Points3f lower = straight({0, -0.105f, 0}, {0, -0.2f, 0});
+  EXPECT_NEAR(
+      connection_features(upper, lower, kHeadHeight, FlowDirection::end_quarter, Closeness::halves)
+          .f1,
+      connection_features(upper, lower, kHeadHeight, FlowDirection::end_quarter, Closeness::ends)
+          .f1,
+      1e-9);
+  for (Closeness closeness : {Closeness::halves, Closeness::ends})
+    EXPECT_EQ(closeness_from_name(closeness_name(closeness)), closeness);
+  EXPECT_FALSE(closeness_from_name("nearest"));
+}
+
 TEST(GroupWeights, SimilarityOfFreeRootGroups) {
   Points3f a = straight({0, 0, 0}, {0, -0.2f, 0});
   Points3f b = straight({0.01f, 0, 0}, {0.02f, -0.2f, 0});
