@@ -37,8 +37,11 @@ struct GraphClusteringParams {
   /// streams, and on the complete graph spectral clustering cuts the braid across
   /// instead of separating its streams.
   int continuations = 1;
-  /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight.
-  double affinity_scale = 0;
+  /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight. 0.012 at
+  /// the first level (w is mostly 0.9 f1: a gap of about 0.013 H, 3 mm on MakeHuman),
+  /// so that one weak false link between two chains of pieces is cut by the eigengap
+  /// (docs/clustering.md); the median at the second level.
+  double affinity_scale = 0.012;
   SpectralParams spectral;
 };
 
@@ -63,7 +66,10 @@ MiddleClustering cluster_middle_groups(const StrandSet& centres,
 /// (continuations = 0, the paper's complete graph): at this level clusters are regions
 /// of hair (a braid with its streams, a ponytail's tail), not single streams.
 struct HairClusteringParams {
-  HairClusteringParams() { graph.continuations = 0; }
+  HairClusteringParams() {
+    graph.continuations = 0;
+    graph.affinity_scale = 0;
+  }
   GraphClusteringParams graph;
   SimilarityParams similarity;
   /// Divide a cluster where the type changes from root to another type (section 4.3).
