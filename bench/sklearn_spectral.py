@@ -118,7 +118,7 @@ def sklearn_fit(matrix, k, assign_labels, eigen_solver, runs):
             start = time.perf_counter()
             labels = model.fit(matrix).labels_
             times.append(1000.0 * (time.perf_counter() - start))
-    except (ValueError, TypeError, RuntimeError) as error:
+    except (ValueError, TypeError, RuntimeError, np.linalg.LinAlgError) as error:
         message = str(error).strip()
         message = message.splitlines()[0].split(". ")[0] if message else "(no message)"
         return None, None, f"{type(error).__name__}: {message}"
