@@ -47,7 +47,8 @@ void add_graph_clustering_params(ParamSet& params, GraphClusteringParams& values
              "the eigengap looks at most this many clusters in one connected component",
              ParamRange::closed(1, 1000));
   params.add("min_eigengap", s.min_eigengap,
-             "a connected component is divided only if its eigengap exceeds this",
+             "a connected component is divided only if its eigengap exceeds this (and the "
+             "gap stands out: mu_{k+1} >= 6 mu_k, docs/clustering.md)",
              ParamRange::closed(0, 1));
   params.add("dense_limit", s.dense_limit,
              "components of up to this many nodes use a dense eigensolver (Eigen), larger "
