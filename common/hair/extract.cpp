@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "hair/error.h"
 #include "hair/mesh_checks.h"
@@ -139,6 +140,7 @@ OrientationEvidence orientation_evidence(const Points3f& vertices,
                                          const TriangleMeshDistance& head_distance,
                                          const ExtractParams& params) {
   OrientationEvidence evidence;
+  evidence.head_distance_min_m = std::numeric_limits<double>::infinity();
   double growing = 0, falling = 0, total_length = 0, distance_change = 0, height_drop = 0;
   for (const auto& rail : rails) {
     double length = rail_length(vertices, rail);
@@ -149,13 +151,18 @@ OrientationEvidence orientation_evidence(const Points3f& vertices,
     if (share_up <= 1 - params.ordered_rail_fraction) falling += length;
     Eigen::Vector3d first = vertices.row(rail.front()).cast<double>().transpose();
     Eigen::Vector3d last = vertices.row(rail.back()).cast<double>().transpose();
-    distance_change += head_distance.distance(last) - head_distance.distance(first);
+    double first_distance = head_distance.distance(first),
+           last_distance = head_distance.distance(last);
+    distance_change += last_distance - first_distance;
+    evidence.head_distance_min_m =
+        std::min({evidence.head_distance_min_m, first_distance, last_distance});
     height_drop += first.y() - last.y();
     total_length += length;
   }
   evidence.has_ordered_rails = growing + falling > 0;
   if (evidence.has_ordered_rails)
     evidence.vertex_order_vote = (growing - falling) / (growing + falling);
+  if (rails.empty()) evidence.head_distance_min_m = 0;
   if (total_length > 0) {
     evidence.scalp_distance_slope = distance_change / total_length;
     evidence.height_slope = height_drop / total_length;
@@ -414,7 +421,8 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
 
   // Decide directions: confident regions first, then the mesh's conventions for the rest.
   OrientationThresholds thresholds{params.vertex_order_min_vote, params.scalp_distance_min_slope,
-                                   params.uv_min_growth};
+                                   params.uv_min_growth, params.height_min_slope,
+                                   params.height_min_head_distance_h * result.head.head_height};
   MeshConventions conventions = mesh_conventions(regions, thresholds, params);
   result.stats.vertex_order_trusted = conventions.trust_vertex_order;
   result.stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);

@@ -30,6 +30,8 @@ struct ExtractParams {
   double vertex_order_min_vote = 0.8;
   double scalp_distance_min_slope = 0.2;
   double uv_min_growth = 0.3;
+  double height_min_slope = 0.3;
+  double height_min_head_distance_h = 0.05;
   /// Share of confidently decided regions that must agree on a texture convention
   /// (v axis along the hair; v growing root to tip) for the mesh to use it.
   double convention_min_agreement = 0.85;

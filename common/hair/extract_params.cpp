@@ -36,6 +36,13 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "change of distance to the head per unit of rail length for the head distance "
              "to decide",
              ParamRange::above(0));
+  params.add("height_min_slope", p.height_min_slope,
+             "height change per unit of rail length that settles vertex order against head "
+             "distance when they disagree (the higher end is the root)...",
+             ParamRange::closed(0, 1));
+  params.add("height_min_head_distance_h", p.height_min_head_distance_h,
+             "...for regions whose rail ends all lie at least this far from the head, in H",
+             ParamRange::at_least(0));
   params.add("continuation_radius_h", p.continuation_radius_h,
              "distance, in H, within which another patch's strand continues a rail",
              ParamRange::above(0));

@@ -29,6 +29,9 @@ struct OrientationEvidence {
   std::optional<double> uv_growth = std::nullopt;
   /// sum over rails of (height of the first point - height of the last) / sum of lengths.
   double height_slope = 0;
+  /// Smallest distance of a rail end from the head, in metres: hair lying on the head
+  /// (a cap, short hair brushed up) may rise from its root; hair off the head falls.
+  double head_distance_min_m = 0;
 };
 
 /// Thresholds of the decision; see decide_orientation().
@@ -36,6 +39,8 @@ struct OrientationThresholds {
   double vertex_order_min_vote = 0.8;     ///< |vote| for the ordered rails to agree (90%)
   double scalp_distance_min_slope = 0.2;  ///< |slope| for the head distance to decide
   double uv_min_growth = 0.3;             ///< |uv growth| for the texture to decide
+  double height_min_slope = 0.3;          ///< |height slope| to settle ids against head distance...
+  double height_min_head_distance_m = 0;  ///< ...for hair at least this far off the head
 };
 
 /// What the rest of the mesh says, learnt from its confidently decided regions.
@@ -53,7 +58,9 @@ struct OrientationDecision {
 /// Decides a region's direction (DESIGN: "check vertex order per patch, fall back on
 /// geometry where it is inconsistent"):
 ///  1. ordered rails that agree decide (vertex_order), unless the head distance decides
-///     the other way, or the mesh's ids are not to be trusted;
+///     the other way, or the mesh's ids are not to be trusted; when the two disagree off
+///     the head, a decisive height slope settles it (hair falls; a braid's pieces weave toward and
+///     away from the head as they cross, so there the head distance misleads);
 ///  2. else a decisive head-distance slope decides (scalp_distance);
 ///  3. (continuation is decided between passes, from the neighbours: see extract.cpp)
 ///  4. else the texture's v growth, if the mesh has a consistent convention (uv);
