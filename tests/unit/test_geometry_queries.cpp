@@ -83,6 +83,28 @@ TEST(DecideOrientation, RulesApplyInOrder) {
              std::nullopt);
   EXPECT_EQ(d->rule, OrientationRule::scalp_distance);
   EXPECT_TRUE(d->reverse);
+  // The same off the head, falling the way the ids run (a braid piece weaving away from
+  // the head): the height settles it for the ids...
+  thresholds.height_min_head_distance_m = 0.01;
+  OrientationEvidence weaving{.vertex_order_vote = 1,
+                              .has_ordered_rails = true,
+                              .scalp_distance_slope = -0.5,
+                              .height_slope = 0.6,
+                              .head_distance_min_m = 0.02};
+  d = decide(weaving, std::nullopt);
+  EXPECT_EQ(d->rule, OrientationRule::vertex_order);
+  EXPECT_FALSE(d->reverse);
+  // ...but not on the head, nor when it barely falls.
+  weaving.head_distance_min_m = 0.005;
+  EXPECT_EQ(decide(weaving, std::nullopt)->rule, OrientationRule::scalp_distance);
+  weaving.head_distance_min_m = 0.02;
+  weaving.height_slope = 0.1;
+  EXPECT_TRUE(decide(weaving, std::nullopt)->reverse);
+  // Off the head and rising the way the ids run: height sides with the distance.
+  weaving.height_slope = -0.6;
+  d = decide(weaving, std::nullopt);
+  EXPECT_EQ(d->rule, OrientationRule::scalp_distance);
+  EXPECT_TRUE(d->reverse);
   // Untrusted ids are ignored.
   d = decide({.vertex_order_vote = -1, .has_ordered_rails = true},
              MeshConventions{false, std::nullopt});
