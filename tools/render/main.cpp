@@ -9,10 +9,12 @@
 #include "hair/clustering_io.h"
 #include "hair/error.h"
 #include "hair/extract_io.h"
+#include "hair/grow_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/file.h"
 #include "hair/render/cluster_picture.h"
 #include "hair/render/extract_picture.h"
+#include "hair/render/grow_picture.h"
 #include "hair/typeify_io.h"
 
 namespace {
@@ -38,17 +40,21 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
     return hair::extract_picture(file, how, options);
   }
   if (schema != hair::kTypesSchema && schema != hair::kMiddleSchema &&
-      schema != hair::kClustersSchema)
+      schema != hair::kClustersSchema && schema != hair::kStrandsSchema)
     throw hair::Error::bad_input(file.name(), "schema '" + schema +
                                                   "' is not one hair-render draws (extract, "
-                                                  "types, middle or clusters)");
+                                                  "types, middle, clusters or strands)");
   if (extract_path.empty())
     throw hair::Error::usage(file.name() + " (" + schema +
                              ") needs --extract: the extract.h5 it was made from");
-  if (!colouring.empty() && schema != hair::kClustersSchema)
-    throw hair::Error::usage("--color-by is for extract.h5 and clusters.h5, not " + file.name() +
-                             " (" + schema + ")");
+  if (!colouring.empty() && schema != hair::kClustersSchema && schema != hair::kStrandsSchema)
+    throw hair::Error::usage("--color-by is for extract.h5, clusters.h5 and strands.h5, not " +
+                             file.name() + " (" + schema + ")");
   hair::h5::File extract = hair::h5::File::open_read_only(extract_path);
+  if (schema == hair::kStrandsSchema) {
+    hair::GrownColouring how = hair::parse_grown_colouring(colour_word("cluster"));
+    return hair::grown_picture(file, extract, options, how);
+  }
   if (schema == hair::kTypesSchema) {
     colour_word("type");
     return hair::types_picture(file, extract, options);
@@ -70,15 +76,17 @@ int main(int argc, char** argv) {
   int size_px = 512;
   bool no_body = false;
   app.add_option("FILE", input_path,
-                 "extract.h5; or, with --extract, types.h5, middle.h5 or clusters.h5")
+                 "extract.h5; or, with --extract, types.h5, middle.h5, clusters.h5 or strands.h5")
       ->required();
   app.add_option("--extract", extract_path,
-                 "the extract.h5 that types.h5, middle.h5 or clusters.h5 was made from");
+                 "the extract.h5 that types.h5, middle.h5, clusters.h5 or strands.h5 was made "
+                 "from");
   app.add_option("-o,--output", output_path, "PNG to write")->required();
   app.add_option("--color-by", colouring,
                  "extract.h5: group (default), direction, rule or kind; clusters.h5: cluster "
                  "(default, the final clusters) or before_split (as spectral clustering found "
-                 "them). types.h5 is coloured by type, middle.h5 by middle cluster (other "
+                 "them); strands.h5: cluster (default), rule (how each segment was grown) or "
+                 "direction. types.h5 is coloured by type, middle.h5 by middle cluster (other "
                  "groups grey)");
   app.add_option("--size", size_px, "pixels per view")->check(CLI::Range(64, 4096));
   app.add_option("--title", title, "text at the top left (default: the file and colouring)");

@@ -1,0 +1,431 @@
+#include "hair/strand_growing.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <optional>
+
+#include "hair/body_sdf.h"
+#include "hair/error.h"
+#include "hair/orientation_field.h"
+#include "hair/point_index.h"
+#include "hair/surface_sampling.h"
+
+namespace hair {
+
+const char* grow_rule_name(GrowRule rule) {
+  switch (rule) {
+    case GrowRule::root:
+      return "root";
+    case GrowRule::field:
+      return "field";
+    case GrowRule::input_strand:
+      return "input_strand";
+    case GrowRule::bridge:
+      return "bridge";
+  }
+  return "?";
+}
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+bool is_root_type(GroupType type) {
+  return type == GroupType::root_free || type == GroupType::root_connected;
+}
+
+Vec3 point_of(const Points3f& points, int64_t row) {
+  return points.row(row).cast<double>().transpose();
+}
+
+/// A place where a strand can be entered at the end of another: the first point of an
+/// input strand (followed root to tip) or its last (followed backwards, for pieces that
+/// extract read tip to root).
+struct StrandEntry {
+  int32_t strand = -1;
+  bool backward = false;
+};
+
+/// Everything the growing of one strand looks up, built once.
+class GrowingContext {
+ public:
+  GrowingContext(const GrowInput& input, const GrowParams& params)
+      : input_(input), params_(params), h_(input.head_height_m) {
+    const StrandSet& strands = input.input_strands;
+    const auto& group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
+    strand_group_ = group;
+    int64_t strand_count = strands.strand_count();
+    group_strands_.resize(input.group_type.size());
+    for (int64_t s = 0; s < strand_count; ++s)
+      group_strands_[static_cast<size_t>(group[static_cast<size_t>(s)])].push_back(
+          static_cast<int32_t>(s));
+
+    // Points of the root-type strands, for the roots' clusters and reference lengths.
+    std::vector<int64_t> rows;
+    for (int64_t s = 0; s < strand_count; ++s)
+      if (is_root_type(type_of_strand(s)))
+        for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
+          rows.push_back(row);
+    if (rows.empty()) {
+      any_type_roots_ = true;
+      for (int64_t row = 0; row < strands.point_count(); ++row) rows.push_back(row);
+    }
+    root_point_rows_ = rows;
+    Points3f root_points(static_cast<Eigen::Index>(rows.size()), 3);
+    for (size_t i = 0; i < rows.size(); ++i)
+      root_points.row(static_cast<Eigen::Index>(i)) = strands.points.row(rows[i]);
+    root_index_ = std::make_unique<PointIndex>(root_points);
+    point_strand_.resize(static_cast<size_t>(strands.point_count()));
+    for (int64_t s = 0; s < strand_count; ++s)
+      for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
+        point_strand_[static_cast<size_t>(row)] = static_cast<int32_t>(s);
+
+    // Entries: both ends of every input strand.
+    Points3f entry_points(2 * strand_count, 3);
+    for (int64_t s = 0; s < strand_count; ++s) {
+      entry_points.row(2 * s) = strands.points.row(strands.offsets[s]);
+      entry_points.row(2 * s + 1) = strands.points.row(strands.offsets[s + 1] - 1);
+      entries_.push_back({static_cast<int32_t>(s), false});
+      entries_.push_back({static_cast<int32_t>(s), true});
+    }
+    entry_index_ = std::make_unique<PointIndex>(entry_points);
+
+    // Arc length from each point to its strand's tip.
+    length_to_tip_m_.assign(static_cast<size_t>(strands.point_count()), 0.0);
+    for (int64_t s = 0; s < strand_count; ++s)
+      for (int64_t row = strands.offsets[s + 1] - 2; row >= strands.offsets[s]; --row)
+        length_to_tip_m_[static_cast<size_t>(row)] =
+            length_to_tip_m_[static_cast<size_t>(row + 1)] +
+            (point_of(strands.points, row + 1) - point_of(strands.points, row)).norm();
+  }
+
+  GroupType type_of_strand(int64_t s) const {
+    return input_.group_type[static_cast<size_t>(strand_group_[static_cast<size_t>(s)])];
+  }
+  int32_t cluster_of_strand(int64_t s) const {
+    return input_.group_cluster[static_cast<size_t>(strand_group_[static_cast<size_t>(s)])];
+  }
+  int32_t group_of_strand(int64_t s) const { return strand_group_[static_cast<size_t>(s)]; }
+  bool any_type_roots() const { return any_type_roots_; }
+
+  /// The input-strand point nearest `point` among the root-type strands (all strands
+  /// when there are none): its row in input_strands.points.
+  int64_t nearest_root_point(const Vec3& point) const {
+    return root_point_rows_[static_cast<size_t>(
+        root_index_->nearest(point.cast<float>(), 1).front())];
+  }
+  int32_t strand_of_point(int64_t row) const { return point_strand_[static_cast<size_t>(row)]; }
+  double length_to_tip_m(int64_t row) const { return length_to_tip_m_[static_cast<size_t>(row)]; }
+
+  /// Closest point of the rails of `group` to `point`: the tangent there (along the
+  /// reading direction) and whether the point lies past the end being read towards.
+  struct Following {
+    Vec3 direction;
+    bool past_end = false;
+    double distance_m = 0;  ///< from the rail
+  };
+  Following follow(int32_t group, bool backward, const Vec3& point) const {
+    const StrandSet& strands = input_.input_strands;
+    double best = std::numeric_limits<double>::infinity();
+    Following result{Vec3::UnitY() * -1.0, true, best};
+    for (int32_t s : group_strands_[static_cast<size_t>(group)]) {
+      int64_t first = strands.offsets[s], last = strands.offsets[s + 1] - 1;
+      for (int64_t row = first; row < last; ++row) {
+        Vec3 a = point_of(strands.points, row), b = point_of(strands.points, row + 1);
+        Vec3 ab = b - a;
+        double length2 = ab.squaredNorm();
+        if (length2 <= 0) continue;
+        double t = std::clamp((point - a).dot(ab) / length2, 0.0, 1.0);
+        double distance2 = (a + t * ab - point).squaredNorm();
+        if (distance2 >= best) continue;
+        best = distance2;
+        Vec3 direction = ab.normalized() * (backward ? -1.0 : 1.0);
+        // Past the end: beyond the last segment's far end in the reading direction.
+        bool at_end = backward ? (row == first && t <= 0.0) : (row == last - 1 && t >= 1.0);
+        result = {direction, at_end && (point - (backward ? a : b)).dot(direction) >= 0,
+                  std::sqrt(distance2)};
+      }
+    }
+    return result;
+  }
+
+  /// The best input strand to continue into from `point` going `direction`, among
+  /// strands of groups not yet visited and not of `excluded_cluster`: the nearest entry
+  /// (weighted by how much it turns), from `preferred_cluster` if any qualifies.
+  std::optional<StrandEntry> next_entry(const Vec3& point, const Vec3& direction,
+                                        const std::vector<int32_t>& visited_groups,
+                                        int32_t preferred_cluster, int32_t excluded_cluster) const {
+    const StrandSet& strands = input_.input_strands;
+    double radius_m = params_.continue_radius_h * h_;
+    double min_cos = std::cos(params_.continue_max_angle_deg * std::numbers::pi / 180);
+    std::optional<StrandEntry> best_same, best_other;
+    double score_same = std::numeric_limits<double>::infinity(), score_other = score_same;
+    for (int32_t e : entry_index_->within(point.cast<float>(), static_cast<float>(radius_m))) {
+      const StrandEntry& entry = entries_[static_cast<size_t>(e)];
+      int32_t group = group_of_strand(entry.strand);
+      int32_t cluster = cluster_of_strand(entry.strand);
+      if (cluster == excluded_cluster) continue;
+      if (std::find(visited_groups.begin(), visited_groups.end(), group) != visited_groups.end())
+        continue;
+      int64_t first = strands.offsets[entry.strand], last = strands.offsets[entry.strand + 1] - 1;
+      if (last - first < 1) continue;
+      Vec3 start =
+          entry.backward ? point_of(strands.points, last) : point_of(strands.points, first);
+      Vec3 next =
+          entry.backward ? point_of(strands.points, last - 1) : point_of(strands.points, first + 1);
+      Vec3 leaving = (next - start).normalized();
+      double turn_cos = leaving.dot(direction);
+      if (turn_cos < min_cos) continue;
+      // Not behind us by more than the radius allows, and not across the gap sideways.
+      Vec3 gap = start - point;
+      double score = gap.norm() / radius_m + (1 - turn_cos);
+      bool same = cluster == preferred_cluster;
+      double& best_score = same ? score_same : score_other;
+      auto& best_entry = same ? best_same : best_other;
+      if (score < best_score) {
+        best_score = score;
+        best_entry = entry;
+      }
+    }
+    return best_same ? best_same : best_other;
+  }
+
+  const GrowInput& input() const { return input_; }
+  const GrowParams& params() const { return params_; }
+
+ private:
+  const GrowInput& input_;
+  const GrowParams& params_;
+  double h_;
+  std::vector<int32_t> strand_group_;
+  std::vector<std::vector<int32_t>> group_strands_;
+  std::vector<int64_t> root_point_rows_;
+  std::unique_ptr<PointIndex> root_index_;
+  std::vector<int32_t> point_strand_;
+  std::vector<StrandEntry> entries_;
+  std::unique_ptr<PointIndex> entry_index_;
+  std::vector<double> length_to_tip_m_;
+  bool any_type_roots_ = false;
+};
+
+/// One strand being grown: its points and the rule of each.
+struct GrowingStrand {
+  std::vector<Vec3> points;
+  std::vector<GrowRule> rules;
+  int64_t pushed_out = 0;
+  int64_t continued_same = 0, continued_other = 0;
+};
+
+/// Grows one strand from `root`. `field` is its cluster's orientation field (null when the
+/// cluster has none); `reference_row` the input-strand point nearest the root.
+GrowingStrand grow_one(const GrowingContext& context, const OrientationField* field,
+                       const BodySdf& body, const Vec3& root, int32_t root_cluster,
+                       int64_t reference_row) {
+  const GrowParams& params = context.params();
+  double h = context.input().head_height_m;
+  double step_m = params.step_h * h, clearance_m = params.body_clearance_h * h;
+  double lost_m = params.continue_radius_h * h;
+  GrowingStrand strand;
+  strand.points.push_back(root);
+  strand.rules.push_back(GrowRule::root);
+  auto add_point = [&](Vec3 point, GrowRule rule) {
+    if (body.push_out(point, clearance_m)) ++strand.pushed_out;
+    strand.points.push_back(point);
+    strand.rules.push_back(rule);
+  };
+  auto full = [&] {
+    return static_cast<int64_t>(strand.points.size()) >= params.max_points_per_strand;
+  };
+  Vec3 direction = Vec3::Zero();
+
+  // 1. Along the cluster's field.
+  if (field && field->direction(root)) {
+    double length_limit_m = params.length_factor * context.length_to_tip_m(reference_row);
+    double length_m = 0;
+    Vec3 point = root;
+    while (length_m + step_m <= length_limit_m && !full()) {
+      std::optional<Vec3> d1 = field->direction(point);
+      if (!d1) break;
+      std::optional<Vec3> d2 = field->direction(point + 0.5 * step_m * *d1);
+      if (!d2) break;
+      Vec3 next = point + step_m * *d2;
+      if (!field->contains(next)) break;
+      add_point(next, GrowRule::field);
+      direction = *d2;
+      length_m += step_m;
+      point = strand.points.back();
+    }
+  }
+
+  // 2. Along input strands, group after group.
+  std::vector<int32_t> visited;
+  int32_t group = -1, cluster = root_cluster;
+  bool backward = false;
+  if (strand.points.size() == 1) {
+    // No field here (a root cluster without one, or a root outside its band): start on
+    // the input strand nearest the root.
+    int32_t s = context.strand_of_point(reference_row);
+    group = context.group_of_strand(s);
+    cluster = context.cluster_of_strand(s);
+    visited.push_back(group);
+  }
+  while (!full()) {
+    Vec3 point = strand.points.back();
+    if (group >= 0) {
+      GrowingContext::Following following = context.follow(group, backward, point);
+      // Lost (drifted off the strand's group): look for the next strand from here.
+      if (!following.past_end && following.distance_m <= lost_m) {
+        direction = following.direction;
+        add_point(point + step_m * direction, GrowRule::input_strand);
+        continue;
+      }
+    }
+    if (direction.squaredNorm() == 0) break;
+    // At the end of the field or of an input strand: the next strand, bridged to.
+    std::optional<StrandEntry> entry =
+        context.next_entry(point, direction, visited, cluster, group < 0 ? root_cluster : -1);
+    if (!entry) break;
+    int32_t next_cluster = context.cluster_of_strand(entry->strand);
+    (next_cluster == cluster ? strand.continued_same : strand.continued_other) += 1;
+    group = context.group_of_strand(entry->strand);
+    cluster = next_cluster;
+    backward = entry->backward;
+    visited.push_back(group);
+    const StrandSet& strands = context.input().input_strands;
+    Vec3 start = point_of(strands.points, backward ? strands.offsets[entry->strand + 1] - 1
+                                                   : strands.offsets[entry->strand]);
+    while ((start - strand.points.back()).norm() > step_m && !full()) {
+      Vec3 towards = (start - strand.points.back()).normalized();
+      add_point(strand.points.back() + step_m * towards, GrowRule::bridge);
+    }
+  }
+  return strand;
+}
+
+}  // namespace
+
+GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
+  const double h = input.head_height_m;
+  if (!(h > 0)) throw Error::bad_input(input.source, "head height is not positive");
+  if (input.input_strands.strand_count() == 0)
+    throw Error::bad_input(input.source, "no input strands to grow from");
+  if (input.scalp_triangle.size() != static_cast<size_t>(input.body_triangles.rows()))
+    throw Error::bad_input(input.source, "scalp flags do not match the body's triangles");
+  GrowingContext context(input, params);
+  GrowResult result;
+  result.roots_from_any_type = context.any_type_roots();
+  if (result.roots_from_any_type)
+    spdlog::warn("{}: no root-type strand group; roots take the cluster of the nearest strand",
+                 input.source);
+
+  // Roots: blue noise on the scalp covered by root-type strands.
+  const StrandSet& strands = input.input_strands;
+  std::vector<uint8_t> covered(input.scalp_triangle.size(), 0);
+  auto cover_m = static_cast<float>(params.scalp_cover_h * h);
+  for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
+    if (!input.scalp_triangle[static_cast<size_t>(t)]) continue;
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) centre += point_of(input.body_vertices, input.body_triangles(t, k));
+    centre /= 3;
+    int64_t row = context.nearest_root_point(centre);
+    if ((point_of(strands.points, row) - centre).norm() <= cover_m) {
+      covered[static_cast<size_t>(t)] = 1;
+      ++result.scalp_triangles_used;
+    }
+  }
+  if (result.scalp_triangles_used == 0)
+    throw Error::bad_input(input.source,
+                           "no scalp triangle lies under a root-type input strand: nothing to "
+                           "grow from (is scalp_cover_h too small?)");
+  SurfaceSamples roots =
+      poisson_disk_samples(input.body_vertices, input.body_triangles, covered, params.strand_count,
+                           static_cast<uint64_t>(params.seed));
+  result.scalp_area_m2 = roots.area_m2;
+  result.root_spacing_m = roots.min_spacing_m;
+  auto root_count = static_cast<int64_t>(roots.positions.rows());
+  std::vector<int64_t> reference_row(static_cast<size_t>(root_count));
+  std::vector<int32_t> root_cluster(static_cast<size_t>(root_count));
+  for (int64_t r = 0; r < root_count; ++r) {
+    reference_row[static_cast<size_t>(r)] =
+        context.nearest_root_point(point_of(roots.positions, r));
+    root_cluster[static_cast<size_t>(r)] =
+        context.cluster_of_strand(context.strand_of_point(reference_row[static_cast<size_t>(r)]));
+  }
+
+  // One field per cluster with roots, from its root-type strands.
+  int32_t cluster_count = 0;
+  for (int32_t c : input.group_cluster) cluster_count = std::max(cluster_count, c + 1);
+  result.clusters.resize(static_cast<size_t>(cluster_count));
+  for (int32_t c : root_cluster) ++result.clusters[static_cast<size_t>(c)].strand_count;
+  std::vector<std::optional<OrientationField>> fields(static_cast<size_t>(cluster_count));
+  OrientationFieldParams field_params{params.field_voxel_h * h, params.field_band_h * h};
+  for (int32_t c = 0; c < cluster_count; ++c) {
+    if (result.clusters[static_cast<size_t>(c)].strand_count == 0) continue;
+    std::vector<int64_t> ids;
+    for (int64_t s = 0; s < strands.strand_count(); ++s)
+      if (context.cluster_of_strand(s) == c && is_root_type(context.type_of_strand(s)))
+        ids.push_back(s);
+    if (ids.empty()) continue;
+    fields[static_cast<size_t>(c)] = OrientationField::build(strands, ids, field_params);
+    result.clusters[static_cast<size_t>(c)].field_voxel_count =
+        fields[static_cast<size_t>(c)]->band_voxel_count();
+    result.clusters[static_cast<size_t>(c)].field_seeded_voxels =
+        fields[static_cast<size_t>(c)]->seeded_voxel_count();
+  }
+
+  // The body, over the region the strands can reach.
+  double margin_m = (params.continue_radius_h + params.field_band_h + params.step_h) * h;
+  Vec3 low = strands.points.colwise().minCoeff().cast<double>().transpose().array() - margin_m;
+  Vec3 high = strands.points.colwise().maxCoeff().cast<double>().transpose().array() + margin_m;
+  Vec3 root_low = roots.positions.colwise().minCoeff().cast<double>().transpose();
+  Vec3 root_high = roots.positions.colwise().maxCoeff().cast<double>().transpose();
+  low = low.cwiseMin(root_low);
+  high = high.cwiseMax(root_high);
+  BodySdf body(input.body_vertices, input.body_triangles, low, high, params.body_voxel_h * h,
+               4 * params.body_voxel_h * h, input.source);
+
+  // Grow, each strand on its own.
+  std::vector<GrowingStrand> grown(static_cast<size_t>(root_count));
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int64_t r = 0; r < root_count; ++r) {
+    auto i = static_cast<size_t>(r);
+    const auto& field = fields[static_cast<size_t>(root_cluster[i])];
+    grown[i] = grow_one(context, field ? &*field : nullptr, body, point_of(roots.positions, r),
+                        root_cluster[i], reference_row[i]);
+  }
+
+  // Assemble; a strand that could not leave its root gets a second point one step out
+  // along the normal, so every strand is a polyline.
+  std::vector<Points3f> polylines;
+  polylines.reserve(grown.size());
+  std::vector<GrowRule>& rules = result.point_rule;
+  for (size_t i = 0; i < grown.size(); ++i) {
+    GrowingStrand& strand = grown[i];
+    if (strand.points.size() < 2) {
+      Vec3 normal = roots.normals.row(static_cast<Eigen::Index>(i)).cast<double>().transpose();
+      strand.points.push_back(strand.points.front() + params.step_h * h * normal);
+      strand.rules.push_back(GrowRule::field);
+    }
+    Points3f polyline(static_cast<Eigen::Index>(strand.points.size()), 3);
+    for (size_t k = 0; k < strand.points.size(); ++k)
+      polyline.row(static_cast<Eigen::Index>(k)) = strand.points[k].cast<float>().transpose();
+    polylines.push_back(std::move(polyline));
+    rules.insert(rules.end(), strand.rules.begin(), strand.rules.end());
+    result.points_pushed_out += strand.pushed_out;
+    result.continuations_same_cluster += strand.continued_same;
+    result.continuations_other_cluster += strand.continued_other;
+  }
+  result.strands = strand_set_from_polylines(polylines);
+  result.strands.strand_attributes["cluster"] = root_cluster;
+  result.strands.strand_attributes["root_triangle"] = roots.triangle;
+  result.strands.strand_attributes["root_normal"] = roots.normals;
+  check_strand_set(result.strands);
+  return result;
+}
+
+}  // namespace hair

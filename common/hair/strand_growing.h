@@ -1,0 +1,94 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hair/strand_set.h"
+#include "hair/triangle_mesh_distance.h"
+#include "hair/typeify.h"
+
+namespace hair {
+
+/// How a segment of a grown strand was grown (paper section 4.4).
+enum class GrowRule : int8_t {
+  root = 0,          ///< the root point itself, on the scalp
+  field = 1,         ///< along the orientation field of the root's cluster
+  input_strand = 2,  ///< along the closest input strand of a middle or tip group (or any
+                     ///< group, once the field is left)
+  bridge = 3,        ///< across a gap, straight to the start of the next input strand
+};
+const char* grow_rule_name(GrowRule rule);
+
+/// Parameters of grow_strands(); lengths are in head heights H unless they say _m.
+struct GrowParams {
+  int strand_count = 10000;  ///< roots sampled on the scalp
+  int seed = 1;              ///< of the root sampling
+  /// Scalp triangles (extract.h5 /body/scalp_triangle) whose centre lies within this
+  /// distance of a point of a root-type input strand carry roots.
+  double scalp_cover_h = 0.05;
+  double step_h = 0.02;         ///< growing step (RK2 along the field, or along a strand)
+  double field_voxel_h = 0.02;  ///< orientation-field grid spacing
+  double field_band_h = 0.06;   ///< the field reaches this far from its cluster's strands
+  /// The field phase ends once a strand is this many times as long as what remains of the
+  /// input strand nearest its root (from that strand's nearest point to its tip).
+  double length_factor = 1.0;
+  /// At the end of an input strand, the next one must begin (or end, read backwards)
+  /// within this distance...
+  double continue_radius_h = 0.08;
+  /// ...and leave within this angle of the current direction.
+  double continue_max_angle_deg = 60;
+  /// Grown points are kept this far outside the body (its signed distance field).
+  double body_clearance_h = 0.004;
+  double body_voxel_h = 0.01;  ///< spacing of the body's signed distance field
+  int max_points_per_strand = 2000;
+};
+
+/// What grow_strands() reads of extract.h5, types.h5 and clusters.h5.
+struct GrowInput {
+  StrandSet input_strands;             ///< root first; strand_attributes "group"
+  std::vector<GroupType> group_type;   ///< per group
+  std::vector<int32_t> group_cluster;  ///< per group, final clusters
+  Points3f body_vertices;
+  Triangles3i body_triangles;
+  std::vector<uint8_t> scalp_triangle;  ///< per body triangle
+  double head_height_m = 0;
+  std::string source;  ///< names the input in errors
+};
+
+/// Per cluster of the input: what growing did with it.
+struct GrownCluster {
+  int64_t strand_count = 0;       ///< strands rooted in it
+  int64_t field_voxel_count = 0;  ///< 0: no field built (no roots, or no root-type strands)
+  int64_t field_seeded_voxels = 0;
+};
+
+struct GrowResult {
+  /// Grown strands, root first. strand_attributes: "cluster" (int32), "root_triangle"
+  /// (int32, body triangle), "root_normal" (#strands x 3).
+  StrandSet strands;
+  /// Per point: how the segment ending there was grown (GrowRule::root at roots).
+  std::vector<GrowRule> point_rule;
+  std::vector<GrownCluster> clusters;  ///< per input cluster
+  int64_t scalp_triangles_used = 0;
+  double scalp_area_m2 = 0;
+  double root_spacing_m = 0;      ///< smallest distance between two roots
+  int64_t points_pushed_out = 0;  ///< grown points moved out of the body
+  int64_t continuations_same_cluster = 0;
+  int64_t continuations_other_cluster = 0;
+  bool roots_from_any_type = false;  ///< no root-type group: roots took any input strand
+};
+
+/// Grows strands from the scalp (paper section 4.4, Figure 7):
+///  1. roots: blue noise over the scalp triangles that root-type input strands cover,
+///     each in the cluster of the nearest root-type input strand;
+///  2. one orientation field per cluster that has roots, from its root-type strands;
+///  3. each strand follows its cluster's field (RK2) until it leaves the field or has
+///     grown as long as the input strand nearest its root; then it follows the closest
+///     input strand of the group it reaches, and at that strand's end the next input
+///     strand that continues it (same cluster first, then the others), bridging gaps;
+///  4. no point enters the body: points are pushed out along the body's signed distance.
+/// Deterministic whatever the thread count.
+GrowResult grow_strands(const GrowInput& input, const GrowParams& params);
+
+}  // namespace hair

@@ -1,0 +1,77 @@
+// grow: strands grown from the scalp through the clusters of clusters.h5 (paper
+// section 4.4, Figure 7), from extract.h5, types.h5 and clusters.h5 -> strands.h5.
+#include <spdlog/spdlog.h>
+
+#include "hair/atomic_file.h"
+#include "hair/grow_io.h"
+#include "hair/h5/schema_validation.h"
+#include "hair/provenance.h"
+#include "hair/stage_app.h"
+
+int main(int argc, char** argv) {
+  hair::StageApp app("grow",
+                     "Grows strands from roots sampled on the scalp: along one orientation field "
+                     "per cluster, then along the input strands of the groups they reach.");
+  std::string extract_path, types_path, clusters_path;
+  app.cli().add_option("EXTRACT_H5", extract_path, "extract.h5 from the extract stage")->required();
+  app.cli().add_option("TYPES_H5", types_path, "types.h5 from the typeify stage")->required();
+  app.cli()
+      .add_option("CLUSTERS_H5", clusters_path, "clusters.h5 from the cluster-all stage")
+      ->required();
+  hair::GrowParams params;
+  hair::ParamSet& p = app.params();
+  p.add("strand_count", params.strand_count, "strands to grow: roots sampled on the scalp",
+        hair::ParamRange::closed(1, 1'000'000));
+  p.add("seed", params.seed, "seed of the root sampling", hair::ParamRange::at_least(0));
+  p.add("scalp_cover_h", params.scalp_cover_h,
+        "scalp triangles within this distance of a root-type input strand carry roots, in H",
+        hair::ParamRange::above(0));
+  p.add("step_h", params.step_h, "growing step, in H", hair::ParamRange::closed(0.001, 0.1));
+  p.add("field_voxel_h", params.field_voxel_h, "orientation-field voxel size, in H",
+        hair::ParamRange::closed(0.002, 0.2));
+  p.add("field_band_h", params.field_band_h,
+        "the field reaches this far from its cluster's input strands, in H",
+        hair::ParamRange::above(0));
+  p.add("length_factor", params.length_factor,
+        "the field phase ends at this many times the remaining length of the input strand "
+        "nearest the root",
+        hair::ParamRange::above(0));
+  p.add("continue_radius_h", params.continue_radius_h,
+        "at an input strand's end, the next one must start within this distance, in H",
+        hair::ParamRange::above(0));
+  p.add("continue_max_angle_deg", params.continue_max_angle_deg,
+        "...and leave within this angle of the current direction",
+        hair::ParamRange::closed(0, 180));
+  p.add("body_clearance_h", params.body_clearance_h,
+        "grown points are kept this far outside the body, in H", hair::ParamRange::at_least(0));
+  p.add("body_voxel_h", params.body_voxel_h, "spacing of the body's signed distance field, in H",
+        hair::ParamRange::closed(0.001, 0.1));
+  p.add("max_points_per_strand", params.max_points_per_strand,
+        "growing stops at this many points per strand", hair::ParamRange::closed(2, 100'000));
+
+  return app.run(argc, argv, [&] {
+    hair::GrowInput input = hair::read_grow_input(hair::h5::File::open_read_only(extract_path),
+                                                  hair::h5::File::open_read_only(types_path),
+                                                  hair::h5::File::open_read_only(clusters_path));
+    hair::GrowResult result = hair::grow_strands(input, params);
+    spdlog::info(
+        "{}: {} strands, {} points, {} pushed out of the body, {} continuations ({} "
+        "into another cluster)",
+        extract_path, result.strands.strand_count(), result.strands.point_count(),
+        result.points_pushed_out,
+        result.continuations_same_cluster + result.continuations_other_cluster,
+        result.continuations_other_cluster);
+
+    hair::AtomicFile output(app.output_path());
+    hair::h5::File file = hair::h5::File::create(output.temporary_path(), app.output_path());
+    hair::write_strands_file(file, result, params, input.head_height_m);
+    hair::write_provenance(
+        file, hair::stage_provenance(
+                  "grow", app.params().effective_json().dump(),
+                  {{"extract", extract_path}, {"types", types_path}, {"clusters", clusters_path}},
+                  app.elapsed_s(), app.reproducible()));
+    hair::h5::require_valid_output(file, hair::kStrandsSchema);
+    file.close();
+    output.commit();
+  });
+}
