@@ -213,21 +213,6 @@ class GrowingContext {
   bool any_type_roots_ = false;
 };
 
-/// What the field phase of a cluster's strands follows and where it stops.
-struct ClusterField {
-  OrientationField field;
-  std::unique_ptr<PointIndex> region;  ///< points of the cluster's root-type input strands
-  Points3f region_points;
-  double longest_strand_m = 0;
-  /// Whether `point` lies within `radius_m` of the cluster's root-type input strands.
-  bool near(const Vec3& point, double radius_m) const {
-    std::vector<int32_t> nearest = region->nearest(point.cast<float>(), 1);
-    return !nearest.empty() &&
-           (region_points.row(nearest.front()).cast<double>().transpose() - point).norm() <=
-               radius_m;
-  }
-};
-
 /// One strand being grown: its points and the rule of each.
 struct GrowingStrand {
   std::vector<Vec3> points;
@@ -238,7 +223,7 @@ struct GrowingStrand {
 
 /// Grows one strand from `root`. `field` is its cluster's orientation field (null when the
 /// cluster has none); `reference_row` the input-strand point nearest the root.
-GrowingStrand grow_one(const GrowingContext& context, const ClusterField* field,
+GrowingStrand grow_one(const GrowingContext& context, const OrientationField* field,
                        const BodySdf& body, const Vec3& root, int32_t root_cluster,
                        int64_t reference_row) {
   const GrowParams& params = context.params();
@@ -259,18 +244,17 @@ GrowingStrand grow_one(const GrowingContext& context, const ClusterField* field,
   Vec3 direction = Vec3::Zero();
 
   // 1. Along the cluster's field.
-  if (field && field->field.direction(root)) {
-    double length_limit_m = params.length_factor * field->longest_strand_m;
-    double region_m = params.region_h * h;
+  if (field && field->direction(root)) {
+    double length_limit_m = params.length_factor * context.length_to_tip_m(reference_row);
     double length_m = 0;
     Vec3 point = root;
     while (length_m + step_m <= length_limit_m && !full()) {
-      std::optional<Vec3> d1 = field->field.direction(point);
+      std::optional<Vec3> d1 = field->direction(point);
       if (!d1) break;
-      std::optional<Vec3> d2 = field->field.direction(point + 0.5 * step_m * *d1);
+      std::optional<Vec3> d2 = field->direction(point + 0.5 * step_m * *d1);
       if (!d2) break;
       Vec3 next = point + step_m * *d2;
-      if (!field->field.contains(next) || !field->near(next, region_m)) break;
+      if (!field->contains(next)) break;
       add_point(next, GrowRule::field);
       direction = *d2;
       length_m += step_m;
@@ -378,7 +362,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   for (int32_t c : input.group_cluster) cluster_count = std::max(cluster_count, c + 1);
   result.clusters.resize(static_cast<size_t>(cluster_count));
   for (int32_t c : root_cluster) ++result.clusters[static_cast<size_t>(c)].strand_count;
-  std::vector<std::optional<ClusterField>> fields(static_cast<size_t>(cluster_count));
+  std::vector<std::optional<OrientationField>> fields(static_cast<size_t>(cluster_count));
   OrientationFieldParams field_params{params.field_voxel_h * h, params.field_band_h * h};
   for (int32_t c = 0; c < cluster_count; ++c) {
     if (result.clusters[static_cast<size_t>(c)].strand_count == 0) continue;
@@ -387,23 +371,11 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
       if (context.cluster_of_strand(s) == c && is_root_type(context.type_of_strand(s)))
         ids.push_back(s);
     if (ids.empty()) continue;
-    ClusterField& cluster_field = fields[static_cast<size_t>(c)].emplace();
-    cluster_field.field = OrientationField::build(strands, ids, field_params);
-    int64_t point_count = 0;
-    for (int64_t s : ids) point_count += strands.strand_size(s);
-    cluster_field.region_points.resize(point_count, 3);
-    Eigen::Index next_row = 0;
-    for (int64_t s : ids) {
-      cluster_field.region_points.middleRows(next_row, strands.strand_size(s)) = strands.strand(s);
-      next_row += strands.strand_size(s);
-      cluster_field.longest_strand_m =
-          std::max(cluster_field.longest_strand_m, context.length_to_tip_m(strands.offsets[s]));
-    }
-    cluster_field.region = std::make_unique<PointIndex>(cluster_field.region_points);
+    fields[static_cast<size_t>(c)] = OrientationField::build(strands, ids, field_params);
     result.clusters[static_cast<size_t>(c)].field_voxel_count =
-        cluster_field.field.band_voxel_count();
+        fields[static_cast<size_t>(c)]->band_voxel_count();
     result.clusters[static_cast<size_t>(c)].field_seeded_voxels =
-        cluster_field.field.seeded_voxel_count();
+        fields[static_cast<size_t>(c)]->seeded_voxel_count();
   }
 
   // The body, over the region the strands can reach.

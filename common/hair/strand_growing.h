@@ -30,10 +30,8 @@ struct GrowParams {
   double step_h = 0.02;         ///< growing step (RK2 along the field, or along a strand)
   double field_voxel_h = 0.02;  ///< orientation-field grid spacing
   double field_band_h = 0.06;   ///< the field reaches this far from its cluster's strands
-  /// The field phase ends where a strand leaves its cluster's region: farther than this
-  /// from every root-type input strand of the cluster...
-  double region_h = 0.03;
-  /// ...or once it is this many times as long as the cluster's longest input strand.
+  /// The field phase ends once a strand is this many times as long as what remains of the
+  /// input strand nearest its root (from that strand's nearest point to its tip).
   double length_factor = 1.0;
   /// At the end of an input strand, the next one must begin (or end, read backwards)
   /// within this distance...
@@ -85,8 +83,8 @@ struct GrowResult {
 ///  1. roots: blue noise over the scalp triangles that root-type input strands cover,
 ///     each in the cluster of the nearest root-type input strand;
 ///  2. one orientation field per cluster that has roots, from its root-type strands;
-///  3. each strand follows its cluster's field (RK2) until it leaves the cluster's region
-///     or grows longer than the cluster's longest input strand; then it follows the closest
+///  3. each strand follows its cluster's field (RK2) until it leaves the field or has
+///     grown as long as the input strand nearest its root; then it follows the closest
 ///     input strand of the group it reaches, and at that strand's end the next input
 ///     strand that continues it (same cluster first, then the others), bridging gaps;
 ///  4. no point enters the body: points are pushed out along the body's signed distance.

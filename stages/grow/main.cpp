@@ -32,12 +32,9 @@ int main(int argc, char** argv) {
   p.add("field_band_h", params.field_band_h,
         "the field reaches this far from its cluster's input strands, in H",
         hair::ParamRange::above(0));
-  p.add("region_h", params.region_h,
-        "the field phase ends farther than this from the cluster's root-type input strands, "
-        "in H...",
-        hair::ParamRange::above(0));
   p.add("length_factor", params.length_factor,
-        "...or at this many times the length of the cluster's longest input strand",
+        "the field phase ends at this many times the remaining length of the input strand "
+        "nearest the root",
         hair::ParamRange::above(0));
   p.add("continue_radius_h", params.continue_radius_h,
         "at an input strand's end, the next one must start within this distance, in H",

@@ -1,0 +1,266 @@
+// grow and hair-grow-report as subprocesses: on the braid and ponytail samples after
+// extract, typeify, cluster-middle and cluster-all (2000 strands, to stay fast), a valid
+// strands.h5 with every root on the scalp; byte-identical reruns whatever the thread
+// count; bad input (exit 2, one line, no output, an existing output untouched); the
+// report's header, row and refusal.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hair/grow_io.h"
+#include "hair/h5/attribute.h"
+#include "hair/h5/dataset.h"
+#include "hair/h5/enum_dataset.h"
+#include "hair/h5/file.h"
+#include "hair/strand_set.h"
+#include "support/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using hair::test::read_file_bytes;
+using hair::test::run_command;
+using hair::test::TemporaryDirectory;
+using hair::test::text_lines;
+
+const fs::path kBin = fs::path(HAIR_BIN_DIR);
+const fs::path kSamples = fs::path(HAIR_SOURCE_DIR) / "data" / "samples";
+constexpr int kStrands = 2000;
+
+/// Runs a stage and expects it to succeed.
+void run_stage(const std::string& stage, std::vector<std::string> arguments) {
+  arguments.insert(arguments.end(), {"--quiet", "--reproducible"});
+  auto result = run_command(kBin / stage, arguments);
+  ASSERT_EQ(result.exit_code, 0) << stage << ": " << result.err;
+}
+
+/// The pipeline's files for one model, up to strands.h5.
+struct Outputs {
+  fs::path extract, types, middle, clusters, strands;
+  std::vector<std::string> grow_inputs() const {
+    return {extract.string(), types.string(), clusters.string()};
+  }
+};
+
+/// Runs extract to cluster-all on `mesh` in `folder`, then grow with kStrands strands if
+/// `grow`.
+Outputs run_pipeline(const fs::path& folder, const fs::path& mesh, bool grow) {
+  fs::create_directories(folder);
+  Outputs out{folder / "extract.h5", folder / "types.h5", folder / "middle.h5",
+              folder / "clusters.h5", folder / "strands.h5"};
+  if (!fs::exists(out.clusters)) {
+    run_stage("extract", {mesh.string(), "--body", (kSamples / "body.obj").string(), "--unit_scale",
+                          "0.1", "-o", out.extract.string()});
+    run_stage("typeify", {out.extract.string(), "-o", out.types.string()});
+    run_stage("cluster-middle", {out.types.string(), "-o", out.middle.string()});
+    run_stage("cluster-all",
+              {out.types.string(), out.middle.string(), "-o", out.clusters.string()});
+  }
+  if (grow && !fs::exists(out.strands)) {
+    std::vector<std::string> arguments = out.grow_inputs();
+    arguments.insert(arguments.end(),
+                     {"--strand_count", std::to_string(kStrands), "-o", out.strands.string()});
+    run_stage("grow", arguments);
+  }
+  return out;
+}
+
+/// The samples' pipeline files, made on first use and kept for the suite. ctest runs
+/// every test in a process of its own, so each makes only what it uses.
+class GrowCli : public ::testing::Test {
+ protected:
+  static void TearDownTestSuite() { directory_.reset(); }
+
+  static const TemporaryDirectory& directory() {
+    if (!directory_) directory_ = std::make_unique<TemporaryDirectory>("grow_cli");
+    return *directory_;
+  }
+  /// braid01 or ponytail01 up to clusters.h5, and strands.h5 if `grown`.
+  static Outputs sample(const std::string& model, bool grown) {
+    return run_pipeline(directory() / model, kSamples / "hair" / (model + ".obj"), grown);
+  }
+
+ private:
+  static std::unique_ptr<TemporaryDirectory> directory_;
+};
+std::unique_ptr<TemporaryDirectory> GrowCli::directory_;
+
+/// Checks strands.h5 of `out`: valid, kStrands strands with their attributes, roots on
+/// flagged scalp triangles, clusters of clusters.h5, no stalled strand, one rule per point.
+void expect_valid_strands(const Outputs& out) {
+  auto inspect = run_command(kBin / "hair-inspect", {out.strands.string()});
+  EXPECT_EQ(inspect.exit_code, 0) << inspect.out << inspect.err;
+  std::vector<std::string> report = text_lines(inspect.out);
+  ASSERT_FALSE(report.empty());
+  EXPECT_EQ(report.back(), "valid: hairstyle.strands v1");
+
+  hair::h5::File file = hair::h5::File::open_read_only(out.strands);
+  hair::GrownStrands grown = hair::read_grown_strands(file);
+  hair::GrowInput input = hair::read_grow_input(hair::h5::File::open_read_only(out.extract),
+                                                hair::h5::File::open_read_only(out.types),
+                                                hair::h5::File::open_read_only(out.clusters));
+  const hair::StrandSet& strands = grown.strands;
+  ASSERT_EQ(strands.strand_count(), kStrands);
+  EXPECT_EQ(grown.head_height_m, input.head_height_m);
+  EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "grow");
+  EXPECT_EQ(hair::h5::read_int64_attribute(file, "/", "strand_count_requested"), kStrands);
+  for (const char* name : {"cluster", "root_triangle", "root_normal"})
+    EXPECT_TRUE(strands.strand_attributes.contains(name)) << name;
+
+  const auto& cluster = std::get<std::vector<int32_t>>(strands.strand_attributes.at("cluster"));
+  const auto& triangle =
+      std::get<std::vector<int32_t>>(strands.strand_attributes.at("root_triangle"));
+  int32_t cluster_count =
+      *std::max_element(input.group_cluster.begin(), input.group_cluster.end()) + 1;
+  std::vector<int64_t> per_cluster(static_cast<size_t>(cluster_count), 0);
+  for (int64_t s = 0; s < kStrands; ++s) {
+    int32_t c = cluster[static_cast<size_t>(s)], t = triangle[static_cast<size_t>(s)];
+    ASSERT_GE(c, 0);
+    ASSERT_LT(c, cluster_count);
+    ++per_cluster[static_cast<size_t>(c)];
+    ASSERT_GE(t, 0);
+    ASSERT_LT(t, input.body_triangles.rows());
+    EXPECT_TRUE(input.scalp_triangle[static_cast<size_t>(t)]) << "strand " << s;
+  }
+  EXPECT_EQ(hair::h5::read_vector<int64_t>(file, "/clusters/strand_count"), per_cluster);
+
+  // No strand stalls: every step moves on, and none runs out of points (the default
+  // max_points_per_strand).
+  for (int64_t s = 0; s < kStrands; ++s) {
+    EXPECT_LT(strands.strand_size(s), hair::GrowParams{}.max_points_per_strand) << "strand " << s;
+    for (int64_t row = strands.offsets[s] + 1; row < strands.offsets[s + 1]; ++row)
+      ASSERT_GT((strands.points.row(row) - strands.points.row(row - 1)).norm(), 1e-4f)
+          << "strand " << s << ", point " << row - strands.offsets[s];
+  }
+
+  std::vector<int8_t> rule =
+      hair::h5::read_enum_dataset(file, "/strands/point_rule", hair::grow_rule_members());
+  ASSERT_EQ(static_cast<int64_t>(rule.size()), strands.point_count());
+  std::map<int8_t, int64_t> per_rule;
+  for (int8_t r : rule) ++per_rule[r];
+  for (int64_t s = 0; s < kStrands; ++s)
+    EXPECT_EQ(rule[static_cast<size_t>(strands.offsets[s])],
+              static_cast<int8_t>(hair::GrowRule::root));
+  EXPECT_EQ(per_rule[static_cast<int8_t>(hair::GrowRule::root)], kStrands);
+  // Both phases happen: the cap's field, then the input strands below it.
+  EXPECT_GT(per_rule[static_cast<int8_t>(hair::GrowRule::field)], 0);
+  EXPECT_GT(per_rule[static_cast<int8_t>(hair::GrowRule::input_strand)], 0);
+  std::printf("[ grow     ] %s: %lld points; field %lld, input_strand %lld, bridge %lld\n",
+              out.strands.parent_path().filename().c_str(),
+              static_cast<long long>(strands.point_count()),
+              static_cast<long long>(per_rule[static_cast<int8_t>(hair::GrowRule::field)]),
+              static_cast<long long>(per_rule[static_cast<int8_t>(hair::GrowRule::input_strand)]),
+              static_cast<long long>(per_rule[static_cast<int8_t>(hair::GrowRule::bridge)]));
+}
+
+TEST_F(GrowCli, GrowsTheBraidSample) { expect_valid_strands(sample("braid01", true)); }
+
+TEST_F(GrowCli, GrowsThePonytailSample) { expect_valid_strands(sample("ponytail01", true)); }
+
+TEST_F(GrowCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
+  const Outputs braid = sample("braid01", true);
+  const std::string first = read_file_bytes(braid.strands);
+  // The first run used every core (the default).
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"--threads", "1"}}) {
+    fs::path again = directory() / "again.h5";
+    std::vector<std::string> arguments = braid.grow_inputs();
+    arguments.insert(arguments.end(),
+                     {"--strand_count", std::to_string(kStrands), "-o", again.string()});
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    run_stage("grow", arguments);
+    EXPECT_TRUE(read_file_bytes(again) == first)
+        << "grow " << (extra.empty() ? "" : extra[1] + " thread(s)") << " wrote other bytes";
+    fs::remove(again);
+  }
+}
+
+TEST_F(GrowCli, WrongInputsFailCleanly) {
+  const Outputs braid = sample("braid01", false), ponytail = sample("ponytail01", false);
+  const TemporaryDirectory& directory = GrowCli::directory();
+  hair::test::write_text_file(directory / "text.h5", "not HDF5\n");
+  const std::string extract = braid.extract.string(), types = braid.types.string(),
+                    clusters = braid.clusters.string();
+  struct Case {
+    std::vector<std::string> arguments;
+    std::string expected;  ///< in the error line
+  };
+  const std::vector<Case> cases = {
+      {{(directory / "missing.h5").string(), types, clusters}, "missing.h5"},
+      {{(directory / "text.h5").string(), types, clusters}, "not an HDF5 file"},
+      {{types, extract, clusters}, "expected hairstyle.extract"},
+      {{extract, clusters, types}, "expected hairstyle.types"},
+      {{extract, types, braid.middle.string()}, "expected hairstyle.clusters"},
+      {{extract, types, ponytail.clusters.string()}, "another model"},
+      {{extract, ponytail.types.string(), clusters}, "another model"},
+      {{extract, types, clusters, "--step_h", "5"}, "step_h"},
+      {{extract, types, clusters, "--strand_count", "0"}, "strand_count"},
+      {{extract, types, clusters, "--scalp_cover_h", "1e-6"}, "no scalp triangle"},
+      {{extract, types}, "CLUSTERS_H5"},
+  };
+  // Each case twice: to a new output (none may appear) and over an existing file
+  // (left as it was).
+  const fs::path folder = directory / "failures";
+  fs::create_directories(folder);
+  const fs::path existing = folder / "existing.h5";
+  const std::string existing_bytes = read_file_bytes(braid.clusters);
+  fs::copy_file(braid.clusters, existing);
+  for (const Case& bad : cases) {
+    for (const fs::path& output : {folder / "new.h5", existing}) {
+      std::vector<std::string> arguments = bad.arguments;
+      arguments.insert(arguments.end(), {"-o", output.string()});
+      auto result = run_command(kBin / "grow", arguments);
+      EXPECT_EQ(result.exit_code, 2) << bad.expected << ": " << result.err;
+      std::vector<std::string> lines = text_lines(result.err);
+      ASSERT_EQ(lines.size(), 1u) << result.err;
+      EXPECT_TRUE(lines[0].starts_with("grow: error: ")) << lines[0];
+      EXPECT_NE(lines[0].find(bad.expected), std::string::npos) << lines[0];
+      std::vector<std::string> left;
+      for (const auto& entry : fs::directory_iterator(folder))
+        left.push_back(entry.path().filename().string());
+      std::sort(left.begin(), left.end());
+      EXPECT_EQ(left, std::vector<std::string>{"existing.h5"}) << bad.expected;
+      EXPECT_TRUE(read_file_bytes(existing) == existing_bytes) << bad.expected;
+    }
+  }
+}
+
+TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
+  const Outputs braid = sample("braid01", true);
+  const fs::path report = kBin / "hair-grow-report";
+  auto header = run_command(report, {"--header"});
+  EXPECT_EQ(header.exit_code, 0) << header.err;
+  std::vector<std::string> header_lines = text_lines(header.out);
+  ASSERT_EQ(header_lines.size(), 2u) << header.out;
+  EXPECT_TRUE(header_lines[0].starts_with("| model | strands | points |")) << header_lines[0];
+  EXPECT_TRUE(header_lines[1].starts_with("|---|")) << header_lines[1];
+
+  auto row = run_command(report, {braid.extract.string(), braid.strands.string(), "--name",
+                                  "braid01", "--samples", "500"});
+  EXPECT_EQ(row.exit_code, 0) << row.err;
+  std::vector<std::string> row_lines = text_lines(row.out);
+  ASSERT_EQ(row_lines.size(), 1u) << row.out;
+  std::printf("[ grow     ] %s\n", row_lines[0].c_str());
+  int64_t points =
+      hair::read_grown_strands(hair::h5::File::open_read_only(braid.strands)).strands.point_count();
+  EXPECT_TRUE(row_lines[0].starts_with("| braid01 | 2000 | " + std::to_string(points) + " | "))
+      << row_lines[0];
+  // As many columns as the header.
+  EXPECT_EQ(std::count(row_lines[0].begin(), row_lines[0].end(), '|'),
+            std::count(header_lines[0].begin(), header_lines[0].end(), '|'));
+
+  auto missing =
+      run_command(report, {braid.extract.string(), (directory() / "missing.h5").string()});
+  EXPECT_EQ(missing.exit_code, 2);
+  ASSERT_EQ(text_lines(missing.err).size(), 1u) << missing.err;
+  EXPECT_NE(missing.err.find("missing.h5"), std::string::npos) << missing.err;
+  EXPECT_TRUE(missing.out.empty()) << missing.out;
+}
+
+}  // namespace

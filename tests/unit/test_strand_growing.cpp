@@ -1,0 +1,584 @@
+// grow_strands() on a hand-made head with known answers: a sphere with a scalp cap and
+// four cards of parallel rails lying on it (root-type groups), one of them continued by
+// a middle group and a tip group hanging below it. Roots on the scalp, nothing inside the
+// body, strands under the continued card reaching the tip, the others ending with their
+// card, clusters from the nearest root-type strand; points pushed out of the body where
+// input strands run through it; determinism over thread counts and seeds; refused
+// inputs; a scene without root-type groups.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "hair/error.h"
+#include "hair/strand_growing.h"
+#include "hair/triangle_mesh_distance.h"
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+constexpr double kRadius = 0.1;  // of the head sphere, metres
+const Vec3 kCentre(0, 1.5, 0);
+const Vec3 kUp = Vec3::UnitY();
+constexpr double kScalpAboveCentre = 0.05;  // scalp: triangle centres higher than this
+constexpr double kHeadHeight = 0.24;
+constexpr int kCardCount = 4;
+constexpr double kCardOffset = 0.004;  // rails lie this far outside the sphere
+constexpr double kRailSpacing = 0.006;
+constexpr int kRailsPerCard = 5;
+constexpr double kOuterRail = kRailSpacing * (kRailsPerCard - 1) / 2;  // from the card's middle
+constexpr double kCardFirstDeg = 20, kCardLastDeg = 110;  // polar angles of a rail's ends
+constexpr int kRailPoints = 37;                           // 2.5 degrees (about 4.5 mm) apart
+constexpr double kGap = 0.015;  // between the continued card, the middle and the tip
+constexpr double kMiddleLength = 0.12, kTipLength = 0.08;
+constexpr double kInputStep = 0.005;  // spacing of the straight input strands' points
+constexpr int kStrandCount = 400;
+// Groups: cards 0-3 (card 0 continued), then the middle and the tip.
+constexpr int32_t kContinuedCard = 0, kMiddleGroup = 4, kTipGroup = 5;
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180; }
+
+/// A sphere of kRadius about kCentre: an icosahedron whose triangles are split in four
+/// `subdivisions` times, the new vertices pushed onto the sphere; wound counter-clockwise
+/// seen from outside.
+void icosphere(int subdivisions, Points3f& vertices, Triangles3i& triangles) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3> points = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                              {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                              {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  for (auto& p : points) p.normalize();
+  std::vector<std::array<int32_t, 3>> faces = {
+      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (int level = 0; level < subdivisions; ++level) {
+    std::map<std::pair<int32_t, int32_t>, int32_t> midpoints;
+    auto midpoint = [&](int32_t a, int32_t b) {
+      auto key = std::minmax(a, b);
+      auto [it, added] = midpoints.try_emplace(key, static_cast<int32_t>(points.size()));
+      if (added) points.push_back((points[a] + points[b]).normalized());
+      return it->second;
+    };
+    std::vector<std::array<int32_t, 3>> split;
+    for (const auto& [a, b, c] : faces) {
+      int32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      split.insert(split.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
+    }
+    faces = std::move(split);
+  }
+  vertices.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t v = 0; v < points.size(); ++v)
+    vertices.row(static_cast<Eigen::Index>(v)) = (kCentre + kRadius * points[v]).cast<float>();
+  triangles.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (size_t t = 0; t < faces.size(); ++t)
+    triangles.row(static_cast<Eigen::Index>(t)) << faces[t][0], faces[t][1], faces[t][2];
+}
+
+Vec3 point_of(const Points3f& points, int64_t row) {
+  return points.row(row).cast<double>().transpose();
+}
+
+Vec3 corner(const GrowInput& input, Eigen::Index t, int k) {
+  return point_of(input.body_vertices, input.body_triangles(t, k));
+}
+
+/// Scalp flags on the body triangles whose centre satisfies `flagged`.
+template <class Predicate>
+std::vector<uint8_t> flags_where(const GrowInput& input, Predicate flagged) {
+  std::vector<uint8_t> flags(static_cast<size_t>(input.body_triangles.rows()), 0);
+  for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
+    Vec3 centre = (corner(input, t, 0) + corner(input, t, 1) + corner(input, t, 2)) / 3;
+    flags[static_cast<size_t>(t)] = flagged(centre) ? 1 : 0;
+  }
+  return flags;
+}
+
+/// A straight input strand from `start` along the unit `direction` for `length` metres.
+Points3f straight_rail(const Vec3& start, const Vec3& direction, double length) {
+  int count = static_cast<int>(std::round(length / kInputStep)) + 1;
+  Points3f points(count, 3);
+  for (int i = 0; i < count; ++i)
+    points.row(i) = (start + (length * i / (count - 1)) * direction).transpose().cast<float>();
+  return points;
+}
+
+/// A card's frame: `out` horizontal, away from the vertical axis through the centre;
+/// `side` horizontal, across the card.
+struct CardFrame {
+  Vec3 out, side;
+};
+
+CardFrame card_frame(int card) {
+  double azimuth = radians(90.0 * card);
+  Vec3 out(std::cos(azimuth), 0, std::sin(azimuth));
+  return {out, kUp.cross(out)};
+}
+
+/// Polar angle (from +y) of `p` about the centre, in the plane of `card`.
+double polar_in_card(int card, const Vec3& p) {
+  Vec3 d = p - kCentre;
+  return std::atan2(d.dot(card_frame(card).out), d.y());
+}
+
+/// Distance of `p` across `card` from its middle plane.
+double lateral_in_card(int card, const Vec3& p) { return (p - kCentre).dot(card_frame(card).side); }
+
+/// The scene: cards at azimuths 0 (+x), 90, 180 and 270 degrees about the vertical axis,
+/// each a sheet of kRailsPerCard parallel rails kRailSpacing apart, every rail a vertical
+/// arc kCardOffset outside the sphere from polar angle kCardFirstDeg (over the scalp) down
+/// to kCardLastDeg (below the equator), root first. The middle group hangs straight down
+/// from kGap below card 0's rail ends, the tip group from kGap below the middle's. Cards
+/// 0-2 are in cluster 0, card 3 in cluster 2 (so that the roots' clusters differ), the
+/// middle and the tip in cluster 1. The scalp is the cap above kScalpAboveCentre.
+struct Scene {
+  GrowInput input;
+  std::vector<Vec3> continued_rail_ends;  ///< last points of card 0's rails
+  std::vector<Vec3> tip_ends;             ///< last points of the tip group's strands
+};
+
+Scene make_scene(bool with_root_types = true, double middle_inset = 0) {
+  Scene scene;
+  GrowInput& input = scene.input;
+  icosphere(4, input.body_vertices, input.body_triangles);  // 5120 triangles, edges ~7 mm
+  input.scalp_triangle =
+      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
+  input.head_height_m = kHeadHeight;
+  input.source = "sphere";
+
+  std::vector<Points3f> polylines;
+  std::vector<int32_t> strand_group;
+  for (int card = 0; card < kCardCount; ++card) {
+    CardFrame frame = card_frame(card);
+    for (int k = 0; k < kRailsPerCard; ++k) {
+      // In the plane `lateral` off the card's middle, the circle kCardOffset outside
+      // the sphere.
+      double lateral = kRailSpacing * k - kOuterRail;
+      double rho = std::sqrt(std::pow(kRadius + kCardOffset, 2) - lateral * lateral);
+      Points3f rail(kRailPoints, 3);
+      for (int i = 0; i < kRailPoints; ++i) {
+        double polar =
+            radians(kCardFirstDeg + (kCardLastDeg - kCardFirstDeg) * i / (kRailPoints - 1));
+        Vec3 p = kCentre + rho * (std::sin(polar) * frame.out + std::cos(polar) * kUp) +
+                 lateral * frame.side;
+        rail.row(i) = p.transpose().cast<float>();
+      }
+      if (card == kContinuedCard)
+        scene.continued_rail_ends.push_back(point_of(rail, kRailPoints - 1));
+      polylines.push_back(rail);
+      strand_group.push_back(card);
+    }
+  }
+  // The middle and the tip, `middle_inset` nearer the vertical axis than the card's end.
+  const Vec3 inset = -middle_inset * card_frame(kContinuedCard).out;
+  for (const Vec3& end : scene.continued_rail_ends) {
+    polylines.push_back(straight_rail(end + inset - kGap * kUp, -kUp, kMiddleLength));
+    strand_group.push_back(kMiddleGroup);
+  }
+  for (const Vec3& end : scene.continued_rail_ends) {
+    Vec3 start = end + inset - (2 * kGap + kMiddleLength) * kUp;
+    polylines.push_back(straight_rail(start, -kUp, kTipLength));
+    strand_group.push_back(kTipGroup);
+    scene.tip_ends.push_back(start - kTipLength * kUp);
+  }
+
+  input.input_strands = strand_set_from_polylines(polylines);
+  input.input_strands.strand_attributes["group"] = strand_group;
+  if (with_root_types)
+    input.group_type = {GroupType::root_connected, GroupType::root_free, GroupType::root_free,
+                        GroupType::root_free,      GroupType::middle,    GroupType::tip};
+  else
+    input.group_type.assign(6, GroupType::middle);
+  input.group_cluster = {0, 0, 0, 2, 1, 1};
+  return scene;
+}
+
+GrowParams params_with(int strand_count, int seed = 1) {
+  GrowParams params;
+  params.strand_count = strand_count;
+  params.seed = seed;
+  return params;
+}
+
+double strand_length(const StrandSet& strands, int64_t s) {
+  double length = 0;
+  for (int64_t row = strands.offsets[s]; row + 1 < strands.offsets[s + 1]; ++row)
+    length += (point_of(strands.points, row + 1) - point_of(strands.points, row)).norm();
+  return length;
+}
+
+Vec3 root_of(const StrandSet& strands, int64_t s) {
+  return point_of(strands.points, strands.offsets[s]);
+}
+Vec3 last_of(const StrandSet& strands, int64_t s) {
+  return point_of(strands.points, strands.offsets[s + 1] - 1);
+}
+
+/// Group of the input-strand point nearest `p` (brute force), among the groups whose
+/// type passes `eligible`.
+template <class Eligible>
+int32_t nearest_group(const GrowInput& input, const Vec3& p, Eligible eligible) {
+  const StrandSet& strands = input.input_strands;
+  const auto& group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
+  double best = std::numeric_limits<double>::infinity();
+  int32_t nearest = -1;
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    int32_t g = group[static_cast<size_t>(s)];
+    if (!eligible(input.group_type[static_cast<size_t>(g)])) continue;
+    for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row) {
+      double distance = (point_of(strands.points, row) - p).norm();
+      if (distance < best) {
+        best = distance;
+        nearest = g;
+      }
+    }
+  }
+  return nearest;
+}
+
+int32_t nearest_root_type_group(const GrowInput& input, const Vec3& p) {
+  return nearest_group(input, p, [](GroupType type) {
+    return type == GroupType::root_free || type == GroupType::root_connected;
+  });
+}
+
+/// The rules of strand `s`'s points.
+std::vector<GrowRule> rules_of(const GrowResult& result, int64_t s) {
+  return {result.point_rule.begin() + result.strands.offsets[s],
+          result.point_rule.begin() + result.strands.offsets[s + 1]};
+}
+
+int64_t count_rule(const std::vector<GrowRule>& rules, GrowRule rule) {
+  return std::count(rules.begin(), rules.end(), rule);
+}
+
+const std::vector<int32_t>& int_attribute(const StrandSet& strands, const std::string& name) {
+  return std::get<std::vector<int32_t>>(strands.strand_attributes.at(name));
+}
+
+/// Whether two results hold the same strands, rules and attributes, bit for bit.
+bool identical(const GrowResult& a, const GrowResult& b) {
+  return a.strands.offsets == b.strands.offsets && a.strands.points == b.strands.points &&
+         a.point_rule == b.point_rule &&
+         int_attribute(a.strands, "cluster") == int_attribute(b.strands, "cluster") &&
+         int_attribute(a.strands, "root_triangle") == int_attribute(b.strands, "root_triangle") &&
+         std::get<Points3f>(a.strands.strand_attributes.at("root_normal")) ==
+             std::get<Points3f>(b.strands.strand_attributes.at("root_normal")) &&
+         a.points_pushed_out == b.points_pushed_out;
+}
+
+/// The scene grown once with kStrandCount strands, shared by the tests that only look.
+class GrowOnSphere : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scene_ = new Scene(make_scene());
+    result_ = new GrowResult(grow_strands(scene_->input, params_with(kStrandCount)));
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete scene_;
+    result_ = nullptr;
+    scene_ = nullptr;
+  }
+  static const GrowInput& input() { return scene_->input; }
+  static const StrandSet& grown() { return result_->strands; }
+
+  static Scene* scene_;
+  static GrowResult* result_;
+};
+Scene* GrowOnSphere::scene_ = nullptr;
+GrowResult* GrowOnSphere::result_ = nullptr;
+
+TEST_F(GrowOnSphere, GrowsTheRequestedStrandsEachFromOneRoot) {
+  ASSERT_EQ(grown().strand_count(), kStrandCount);
+  ASSERT_EQ(static_cast<int64_t>(result_->point_rule.size()), grown().point_count());
+  EXPECT_NO_THROW(check_strand_set(grown()));  // polylines of 2+ finite points
+  const int max_points = GrowParams{}.max_points_per_strand;
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    std::vector<GrowRule> rules = rules_of(*result_, s);
+    EXPECT_EQ(rules.front(), GrowRule::root) << "strand " << s;
+    EXPECT_EQ(count_rule(rules, GrowRule::root), 1) << "strand " << s;
+    // Every step moves on (no strand stalls until it runs out of points).
+    EXPECT_LT(grown().strand_size(s), max_points) << "strand " << s;
+    for (int64_t row = grown().offsets[s] + 1; row < grown().offsets[s + 1]; ++row)
+      ASSERT_GT((point_of(grown().points, row) - point_of(grown().points, row - 1)).norm(), 1e-4)
+          << "strand " << s << ", point " << row - grown().offsets[s];
+  }
+  EXPECT_FALSE(result_->roots_from_any_type);
+  EXPECT_GT(result_->scalp_triangles_used, 0);
+  EXPECT_GT(result_->root_spacing_m, 0);
+  // The scalp area used lies under the cards: less than the whole cap (2 pi r h).
+  EXPECT_GT(result_->scalp_area_m2, 0);
+  EXPECT_LT(result_->scalp_area_m2, 2 * std::numbers::pi * kRadius * (kRadius - kScalpAboveCentre));
+}
+
+TEST_F(GrowOnSphere, RootsLieOnFlaggedScalpTriangles) {
+  const auto& triangle = int_attribute(grown(), "root_triangle");
+  const auto& normal = std::get<Points3f>(grown().strand_attributes.at("root_normal"));
+  ASSERT_EQ(static_cast<int64_t>(triangle.size()), grown().strand_count());
+  ASSERT_EQ(normal.rows(), grown().strand_count());
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    Vec3 root = root_of(grown(), s);
+    int32_t t = triangle[static_cast<size_t>(s)];
+    ASSERT_GE(t, 0);
+    ASSERT_LT(t, input().body_triangles.rows());
+    EXPECT_TRUE(input().scalp_triangle[static_cast<size_t>(t)]) << "strand " << s;
+    Vec3 nearest = closest_point_on_triangle(root, corner(input(), t, 0), corner(input(), t, 1),
+                                             corner(input(), t, 2));
+    EXPECT_LT((nearest - root).norm(), 1e-6) << "strand " << s << " off its root triangle";
+    // The icosphere's flat triangles sag less than 0.1 mm below the sphere.
+    EXPECT_NEAR((root - kCentre).norm(), kRadius, 5e-4) << "strand " << s;
+    Vec3 outward = (root - kCentre).normalized();
+    EXPECT_GT(normal.row(s).cast<double>().dot(outward.transpose()), 0.99) << "strand " << s;
+  }
+}
+
+TEST_F(GrowOnSphere, NoPointEntersTheBody) {
+  double deepest_m = 0;
+  int64_t inside = 0;
+  for (int64_t row = 0; row < grown().point_count(); ++row) {
+    double depth = kRadius - (point_of(grown().points, row) - kCentre).norm();
+    deepest_m = std::max(deepest_m, depth);
+    if (depth > 1e-3) ++inside;
+  }
+  std::printf("[ grow     ] sphere: %lld points, deepest %.3f mm inside, %lld pushed out\n",
+              static_cast<long long>(grown().point_count()), 1e3 * deepest_m,
+              static_cast<long long>(result_->points_pushed_out));
+  EXPECT_EQ(inside, 0) << "points more than 1 mm inside the sphere";
+}
+
+TEST_F(GrowOnSphere, EachStrandTakesTheClusterOfTheNearestRootTypeStrand) {
+  const auto& cluster = int_attribute(grown(), "cluster");
+  ASSERT_EQ(static_cast<int64_t>(cluster.size()), grown().strand_count());
+  std::vector<int64_t> per_cluster(3, 0);
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    int32_t group = nearest_root_type_group(input(), root_of(grown(), s));
+    int32_t expected = input().group_cluster[static_cast<size_t>(group)];
+    EXPECT_EQ(cluster[static_cast<size_t>(s)], expected) << "strand " << s;
+    ++per_cluster[static_cast<size_t>(expected)];
+  }
+  // Roots in both clusters of cards; none in cluster 1 (middle and tip only), so no
+  // field there.
+  EXPECT_GT(per_cluster[0], 0);
+  EXPECT_GT(per_cluster[2], 0);
+  ASSERT_EQ(result_->clusters.size(), 3u);
+  for (size_t c = 0; c < 3; ++c)
+    EXPECT_EQ(result_->clusters[c].strand_count, per_cluster[c]) << "cluster " << c;
+  EXPECT_GT(result_->clusters[0].field_voxel_count, 0);
+  EXPECT_GT(result_->clusters[2].field_voxel_count, 0);
+  EXPECT_EQ(result_->clusters[1].field_voxel_count, 0);
+}
+
+TEST_F(GrowOnSphere, StrandsUnderTheContinuedCardReachTheTip) {
+  // Roots under card 0: below its rails' first points, and between its outer rails (half
+  // a spacing beyond). Roots farther out across the card lie more than continue_radius_h
+  // from the nearest middle strand across the gap. Roots above the rails' first points
+  // (the scalp reaches a few degrees higher) are only counted: their field phase, capped
+  // by an input strand's length, can stop short of the card's end, out of reach of the
+  // middle group.
+  const auto& cluster = int_attribute(grown(), "cluster");
+  double tip_end_y = scene_->tip_ends.front().y();
+  auto reaches_tip = [&](int64_t s) {
+    return std::abs(last_of(grown(), s).y() - tip_end_y) <= 0.01;
+  };
+  int64_t checked = 0, above = 0, above_reaching = 0;
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    Vec3 root = root_of(grown(), s);
+    if (nearest_root_type_group(input(), root) != kContinuedCard) continue;
+    if (std::abs(lateral_in_card(kContinuedCard, root)) > kOuterRail + kRailSpacing / 2) continue;
+    if (polar_in_card(kContinuedCard, root) < radians(kCardFirstDeg)) {
+      ++above;
+      if (reaches_tip(s)) ++above_reaching;
+      continue;
+    }
+    ++checked;
+    // Down to the tip's end (at most a step past it), beside one of the tip strands.
+    EXPECT_TRUE(reaches_tip(s)) << "strand " << s << " ends at y " << last_of(grown(), s).y()
+                                << ", the tip at " << tip_end_y;
+    double beside = std::numeric_limits<double>::infinity();
+    for (const Vec3& end : scene_->tip_ends)
+      beside = std::min(beside, Vec3(last_of(grown(), s) - end).cwiseProduct(Vec3(1, 0, 1)).norm());
+    EXPECT_LT(beside, 0.01) << "strand " << s;
+    std::vector<GrowRule> rules = rules_of(*result_, s);
+    EXPECT_GT(count_rule(rules, GrowRule::bridge), 0) << "strand " << s;
+    EXPECT_GT(count_rule(rules, GrowRule::input_strand), 0) << "strand " << s;
+    EXPECT_EQ(cluster[static_cast<size_t>(s)], 0) << "strand " << s;  // its root's cluster
+  }
+  std::printf(
+      "[ grow     ] sphere: %lld strands under the continued card reach its tip; of %lld "
+      "rooted above the card, %lld do\n",
+      static_cast<long long>(checked), static_cast<long long>(above),
+      static_cast<long long>(above_reaching));
+  EXPECT_GT(checked, 20);
+  EXPECT_GT(result_->continuations_other_cluster, 0);  // card (cluster 0) into the middle (1)
+}
+
+TEST_F(GrowOnSphere, StrandsUnderOtherCardsEndWithTheirCard) {
+  double lowest_ratio = std::numeric_limits<double>::infinity(), highest_ratio = 0;
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    Vec3 root = root_of(grown(), s);
+    int32_t card = nearest_root_type_group(input(), root);
+    if (card == kContinuedCard) continue;
+    // What remains of the card below the root: the arc from the root's polar angle to
+    // the rails' last, kCardOffset out.
+    double remaining =
+        (kRadius + kCardOffset) * (radians(kCardLastDeg) - polar_in_card(card, root));
+    double ratio = strand_length(grown(), s) / remaining;
+    lowest_ratio = std::min(lowest_ratio, ratio);
+    highest_ratio = std::max(highest_ratio, ratio);
+    EXPECT_NEAR(ratio, 1, 0.1) << "strand " << s << " of card " << card;
+    // Its end: at the card's end, in its own plane across the card.
+    Vec3 last = last_of(grown(), s);
+    EXPECT_NEAR(polar_in_card(card, last), radians(kCardLastDeg), radians(8)) << "strand " << s;
+    EXPECT_NEAR(lateral_in_card(card, last), lateral_in_card(card, root), 0.005) << "strand " << s;
+  }
+  std::printf(
+      "[ grow     ] sphere: strands of the other cards are %.3f to %.3f times what "
+      "remains of their card\n",
+      lowest_ratio, highest_ratio);
+}
+
+TEST(StrandGrowing, StrandsAlongInputStrandsThroughTheBodyArePushedOut) {
+  // The middle group 2 cm nearer the axis: its first centimetres run up to 8 mm inside
+  // the sphere. Strands bridged to it and following it unchecked would go as deep; the
+  // body's signed distance keeps every point outside.
+  Scene scene = make_scene(/*with_root_types=*/true, /*middle_inset=*/0.02);
+  double deepest_input_m = 0;
+  for (int64_t row = 0; row < scene.input.input_strands.point_count(); ++row)
+    deepest_input_m =
+        std::max(deepest_input_m,
+                 kRadius - (point_of(scene.input.input_strands.points, row) - kCentre).norm());
+  ASSERT_GT(deepest_input_m, 0.005);
+  GrowResult result = grow_strands(scene.input, params_with(200));
+  ASSERT_EQ(result.strands.strand_count(), 200);
+  double deepest_m = 0;
+  for (int64_t row = 0; row < result.strands.point_count(); ++row)
+    deepest_m =
+        std::max(deepest_m, kRadius - (point_of(result.strands.points, row) - kCentre).norm());
+  std::printf(
+      "[ grow     ] sphere, middle group %.1f mm deep: %lld points pushed out, deepest "
+      "%.3f mm inside\n",
+      1e3 * deepest_input_m, static_cast<long long>(result.points_pushed_out), 1e3 * deepest_m);
+  EXPECT_GT(result.continuations_other_cluster, 0);  // strands did go into the middle group
+  EXPECT_LT(deepest_m, 1e-3);
+}
+
+TEST(StrandGrowing, SameResultForOneAndTwoThreads) {
+  Scene scene = make_scene();
+  const int threads_before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  GrowResult one = grow_strands(scene.input, params_with(kStrandCount));
+  omp_set_num_threads(2);
+  GrowResult two = grow_strands(scene.input, params_with(kStrandCount));
+  omp_set_num_threads(threads_before);
+  EXPECT_TRUE(identical(one, two));
+}
+
+TEST(StrandGrowing, AnotherSeedGivesOtherRoots) {
+  Scene scene = make_scene();
+  GrowResult first = grow_strands(scene.input, params_with(200, 1));
+  GrowResult other = grow_strands(scene.input, params_with(200, 2));
+  ASSERT_EQ(other.strands.strand_count(), 200);
+  // Roots of the other seed that coincide with one of the first seed's.
+  int64_t shared = 0;
+  for (int64_t s = 0; s < 200; ++s)
+    for (int64_t r = 0; r < 200; ++r)
+      if ((root_of(other.strands, s) - root_of(first.strands, r)).norm() < 1e-6) ++shared;
+  EXPECT_LT(shared, 10);
+}
+
+/// The kind of hair::Error grow_strands() throws for `input` and its message, or -1.
+struct Refusal {
+  int kind = -1;
+  std::string message;
+};
+Refusal refusal_of(const GrowInput& input) {
+  try {
+    grow_strands(input, params_with(50));
+  } catch (const Error& error) {
+    return {static_cast<int>(error.kind()), error.what()};
+  }
+  return {};
+}
+
+TEST(StrandGrowing, RefusesInputItCannotGrowFrom) {
+  const int bad_input = static_cast<int>(ErrorKind::bad_input);
+  const Scene scene = make_scene();
+  EXPECT_EQ(refusal_of(scene.input).kind, -1);  // the scene itself grows
+
+  GrowInput no_strands = scene.input;
+  no_strands.input_strands = StrandSet{};
+  no_strands.input_strands.strand_attributes["group"] = std::vector<int32_t>{};
+  Refusal refused = refusal_of(no_strands);
+  EXPECT_EQ(refused.kind, bad_input);
+  EXPECT_NE(refused.message.find("no input strands"), std::string::npos) << refused.message;
+  for (double height : {0.0, -0.24, std::nan("")}) {
+    GrowInput input = scene.input;
+    input.head_height_m = height;
+    refused = refusal_of(input);
+    EXPECT_EQ(refused.kind, bad_input) << height;
+    EXPECT_NE(refused.message.find("head height"), std::string::npos) << refused.message;
+  }
+  for (size_t size :
+       {size_t{0}, scene.input.scalp_triangle.size() - 1, scene.input.scalp_triangle.size() + 1}) {
+    GrowInput input = scene.input;
+    input.scalp_triangle.resize(size, 1);
+    refused = refusal_of(input);
+    EXPECT_EQ(refused.kind, bad_input) << size;
+    EXPECT_NE(refused.message.find("scalp flags"), std::string::npos) << refused.message;
+  }
+  // A scalp that no root-type strand covers: the lower cap (the middle and tip groups
+  // hang outside it, and they do not carry roots anyway), or no scalp at all.
+  GrowInput lower_cap = scene.input;
+  lower_cap.scalp_triangle =
+      flags_where(lower_cap, [](const Vec3& c) { return c.y() < kCentre.y() - 0.07; });
+  GrowInput no_scalp = scene.input;
+  std::fill(no_scalp.scalp_triangle.begin(), no_scalp.scalp_triangle.end(), 0);
+  for (const GrowInput& input : {lower_cap, no_scalp}) {
+    refused = refusal_of(input);
+    EXPECT_EQ(refused.kind, bad_input);
+    EXPECT_NE(refused.message.find("no scalp triangle"), std::string::npos) << refused.message;
+    EXPECT_NE(refused.message.find("sphere"), std::string::npos) << refused.message;
+  }
+}
+
+TEST(StrandGrowing, WithoutRootTypeGroupsRootsTakeAnyStrand) {
+  Scene scene = make_scene(/*with_root_types=*/false);
+  GrowResult result = grow_strands(scene.input, params_with(200));
+  EXPECT_TRUE(result.roots_from_any_type);
+  ASSERT_EQ(result.strands.strand_count(), 200);
+  const auto& cluster = int_attribute(result.strands, "cluster");
+  double shortest_m = std::numeric_limits<double>::infinity();
+  for (int64_t s = 0; s < 200; ++s) {
+    // The cluster of the nearest strand of any type; no field anywhere (no root-type
+    // strands), so the strand follows input strands from its root.
+    int32_t group =
+        nearest_group(scene.input, root_of(result.strands, s), [](GroupType) { return true; });
+    EXPECT_EQ(cluster[static_cast<size_t>(s)],
+              scene.input.group_cluster[static_cast<size_t>(group)])
+        << "strand " << s;
+    std::vector<GrowRule> rules = rules_of(result, s);
+    EXPECT_EQ(count_rule(rules, GrowRule::field), 0) << "strand " << s;
+    EXPECT_GT(count_rule(rules, GrowRule::input_strand), 0) << "strand " << s;
+    shortest_m = std::min(shortest_m, strand_length(result.strands, s));
+  }
+  for (const GrownCluster& grown_cluster : result.clusters)
+    EXPECT_EQ(grown_cluster.field_voxel_count, 0);
+  std::printf("[ grow     ] sphere, no root-type group: shortest strand %.3f m\n", shortest_m);
+  // Every strand runs down its card from the scalp's edge at least (polar 60 to 110
+  // degrees, about 9 cm).
+  EXPECT_GT(shortest_m, 0.08);
+}
+
+}  // namespace
+}  // namespace hair
