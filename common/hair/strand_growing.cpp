@@ -229,7 +229,7 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
   const GrowParams& params = context.params();
   double h = context.input().head_height_m;
   double step_m = params.step_h * h, clearance_m = params.body_clearance_h * h;
-  double lost_m = params.continue_radius_h * h;
+  double lost_m = params.follow_radius_h * h;
   GrowingStrand strand;
   strand.points.push_back(root);
   strand.rules.push_back(GrowRule::root);
@@ -244,11 +244,17 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
   Vec3 direction = Vec3::Zero();
 
   // 1. Along the cluster's field.
+  bool left_field_early = false;
   if (field && field->direction(root)) {
     double length_limit_m = params.length_factor * context.length_to_tip_m(reference_row);
     double length_m = 0;
     Vec3 point = root;
-    while (length_m + step_m <= length_limit_m && !full()) {
+    left_field_early = true;
+    while (!full()) {
+      if (length_m + step_m > length_limit_m) {
+        left_field_early = false;
+        break;
+      }
       std::optional<Vec3> d1 = field->direction(point);
       if (!d1) break;
       std::optional<Vec3> d2 = field->direction(point + 0.5 * step_m * *d1);
@@ -273,13 +279,32 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
     group = context.group_of_strand(s);
     cluster = context.cluster_of_strand(s);
     visited.push_back(group);
+  } else if (left_field_early) {
+    // The field ended before the strand grew as long as its input strands (the edge of
+    // the band, beside a card): go on along the closest input strand of the cluster.
+    int64_t row = context.nearest_root_point(strand.points.back());
+    int32_t s = context.strand_of_point(row);
+    double min_cos = std::cos(params.continue_max_angle_deg * std::numbers::pi / 180);
+    if (context.cluster_of_strand(s) == root_cluster &&
+        (point_of(context.input().input_strands.points, row) - strand.points.back()).norm() <=
+            lost_m &&
+        context.follow(context.group_of_strand(s), false, strand.points.back())
+                .direction.dot(direction) >= min_cos) {
+      group = context.group_of_strand(s);
+      visited.push_back(group);
+    }
   }
-  while (!full()) {
+  double max_length_m = params.max_length_h * h;
+  auto too_long = [&] {
+    return static_cast<double>(strand.points.size() - 1) * step_m > max_length_m;
+  };
+  while (!full() && !too_long()) {
     Vec3 point = strand.points.back();
     if (group >= 0) {
       GrowingContext::Following following = context.follow(group, backward, point);
-      // Lost (drifted off the strand's group): look for the next strand from here.
-      if (!following.past_end && following.distance_m <= lost_m) {
+      // Lost (drifted off the strand's group), or turned back: the end of this group.
+      bool turned_back = direction.squaredNorm() > 0 && following.direction.dot(direction) < 0;
+      if (!following.past_end && following.distance_m <= lost_m && !turned_back) {
         direction = following.direction;
         add_point(point + step_m * direction, GrowRule::input_strand);
         continue;
@@ -299,9 +324,14 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
     const StrandSet& strands = context.input().input_strands;
     Vec3 start = point_of(strands.points, backward ? strands.offsets[entry->strand + 1] - 1
                                                    : strands.offsets[entry->strand]);
-    while ((start - strand.points.back()).norm() > step_m && !full()) {
+    // Straight to its start; a step that gets no nearer (the start lies in the body, and
+    // each step is pushed back out) ends the bridge where it is.
+    for (double gap_m = (start - strand.points.back()).norm(); gap_m > step_m && !full();) {
       Vec3 towards = (start - strand.points.back()).normalized();
       add_point(strand.points.back() + step_m * towards, GrowRule::bridge);
+      double next_gap_m = (start - strand.points.back()).norm();
+      if (next_gap_m > gap_m - 0.25 * step_m) break;
+      gap_m = next_gap_m;
     }
   }
   return strand;

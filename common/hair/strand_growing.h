@@ -38,10 +38,16 @@ struct GrowParams {
   double continue_radius_h = 0.08;
   /// ...and leave within this angle of the current direction.
   double continue_max_angle_deg = 60;
+  /// A strand following an input strand's group is lost (and looks for the next group)
+  /// farther than this from the group's rails.
+  double follow_radius_h = 0.08;
   /// Grown points are kept this far outside the body (its signed distance field).
   double body_clearance_h = 0.004;
   double body_voxel_h = 0.01;  ///< spacing of the body's signed distance field
   int max_points_per_strand = 2000;
+  /// No strand grows longer than this (a guard against strands that wander from group to
+  /// group; the longest MakeHuman hair, long01, is about 3.5 H).
+  double max_length_h = 6;
 };
 
 /// What grow_strands() reads of extract.h5, types.h5 and clusters.h5.

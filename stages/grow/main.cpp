@@ -42,10 +42,15 @@ int main(int argc, char** argv) {
   p.add("continue_max_angle_deg", params.continue_max_angle_deg,
         "...and leave within this angle of the current direction",
         hair::ParamRange::closed(0, 180));
+  p.add("follow_radius_h", params.follow_radius_h,
+        "a strand following an input strand is lost farther than this from its group, in H",
+        hair::ParamRange::above(0));
   p.add("body_clearance_h", params.body_clearance_h,
         "grown points are kept this far outside the body, in H", hair::ParamRange::at_least(0));
   p.add("body_voxel_h", params.body_voxel_h, "spacing of the body's signed distance field, in H",
         hair::ParamRange::closed(0.001, 0.1));
+  p.add("max_length_h", params.max_length_h, "no strand grows longer than this, in H",
+        hair::ParamRange::above(0));
   p.add("max_points_per_strand", params.max_points_per_strand,
         "growing stops at this many points per strand", hair::ParamRange::closed(2, 100'000));
 
