@@ -22,6 +22,7 @@
 #include "hair/error.h"
 #include "hair/strand_growing.h"
 #include "hair/triangle_mesh_distance.h"
+#include "unit/icosphere.h"
 
 namespace hair {
 namespace {
@@ -52,40 +53,12 @@ constexpr int32_t kContinuedCard = 0, kMiddleGroup = 4, kTipGroup = 5;
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180; }
 
-/// A sphere of kRadius about kCentre: an icosahedron whose triangles are split in four
-/// `subdivisions` times, the new vertices pushed onto the sphere; wound counter-clockwise
+/// A sphere of kRadius about kCentre (tests/unit/icosphere.h), wound counter-clockwise
 /// seen from outside.
 void icosphere(int subdivisions, Points3f& vertices, Triangles3i& triangles) {
-  const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Vec3> points = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
-                              {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
-                              {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-  for (auto& p : points) p.normalize();
-  std::vector<std::array<int32_t, 3>> faces = {
-      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (int level = 0; level < subdivisions; ++level) {
-    std::map<std::pair<int32_t, int32_t>, int32_t> midpoints;
-    auto midpoint = [&](int32_t a, int32_t b) {
-      auto key = std::minmax(a, b);
-      auto [it, added] = midpoints.try_emplace(key, static_cast<int32_t>(points.size()));
-      if (added) points.push_back((points[a] + points[b]).normalized());
-      return it->second;
-    };
-    std::vector<std::array<int32_t, 3>> split;
-    for (const auto& [a, b, c] : faces) {
-      int32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-      split.insert(split.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
-    }
-    faces = std::move(split);
-  }
-  vertices.resize(static_cast<Eigen::Index>(points.size()), 3);
-  for (size_t v = 0; v < points.size(); ++v)
-    vertices.row(static_cast<Eigen::Index>(v)) = (kCentre + kRadius * points[v]).cast<float>();
-  triangles.resize(static_cast<Eigen::Index>(faces.size()), 3);
-  for (size_t t = 0; t < faces.size(); ++t)
-    triangles.row(static_cast<Eigen::Index>(t)) << faces[t][0], faces[t][1], faces[t][2];
+  testing::SphereMesh mesh = testing::icosphere(subdivisions, kRadius, kCentre);
+  vertices = std::move(mesh.vertices);
+  triangles = std::move(mesh.triangles);
 }
 
 Vec3 point_of(const Points3f& points, int64_t row) {

@@ -23,58 +23,15 @@
 #include "hair/point_index.h"
 #include "hair/surface_sampling.h"
 #include "hair/triangle_mesh_distance.h"
+#include "unit/icosphere.h"
 
 namespace hair {
 namespace {
 
-/// A unit icosphere: an icosahedron whose triangles are split in four `subdivisions`
-/// times, new vertices pushed onto the sphere. Triangles are wound counter-clockwise
-/// seen from outside, so right-hand normals point outward.
-struct Mesh {
-  Points3f vertices;
-  Triangles3i triangles;
-};
+using Mesh = testing::SphereMesh;
 
-Mesh icosphere(int subdivisions) {
-  const double phi = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Eigen::Vector3d> vertices = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
-                                           {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
-                                           {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
-  for (auto& v : vertices) v.normalize();
-  std::vector<std::array<int32_t, 3>> faces = {
-      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (int level = 0; level < subdivisions; ++level) {
-    std::map<std::pair<int32_t, int32_t>, int32_t> midpoint;
-    auto middle = [&](int32_t a, int32_t b) {
-      auto key = std::minmax(a, b);
-      auto [it, inserted] = midpoint.try_emplace({key.first, key.second}, 0);
-      if (inserted) {
-        vertices.push_back((vertices[a] + vertices[b]).normalized());
-        it->second = static_cast<int32_t>(vertices.size() - 1);
-      }
-      return it->second;
-    };
-    std::vector<std::array<int32_t, 3>> finer;
-    for (auto [a, b, c] : faces) {
-      int32_t ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
-      finer.push_back({a, ab, ca});
-      finer.push_back({b, bc, ab});
-      finer.push_back({c, ca, bc});
-      finer.push_back({ab, bc, ca});
-    }
-    faces = std::move(finer);
-  }
-  Mesh mesh;
-  mesh.vertices.resize(static_cast<Eigen::Index>(vertices.size()), 3);
-  for (size_t v = 0; v < vertices.size(); ++v)
-    mesh.vertices.row(static_cast<Eigen::Index>(v)) = vertices[v].cast<float>().transpose();
-  mesh.triangles.resize(static_cast<Eigen::Index>(faces.size()), 3);
-  for (size_t f = 0; f < faces.size(); ++f)
-    mesh.triangles.row(static_cast<Eigen::Index>(f)) << faces[f][0], faces[f][1], faces[f][2];
-  return mesh;
-}
+/// A unit icosphere (tests/unit/icosphere.h).
+Mesh icosphere(int subdivisions) { return testing::icosphere(subdivisions); }
 
 Eigen::Vector3d corner(const Mesh& mesh, Eigen::Index t, int k) {
   return mesh.vertices.row(mesh.triangles(t, k)).cast<double>().transpose();
