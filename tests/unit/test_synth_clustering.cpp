@@ -20,11 +20,12 @@
 #include "hair/synth/synth_eval.h"
 #include "hair/synth/synth_model.h"
 #include "hair/typeify.h"
+#include "unit/mean_column.h"
 
 namespace hair::synth {
 namespace {
 
-constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+using hair::testing::kNotMeasured;
 
 /// ARIs of one model; NaN where there was nothing to measure.
 struct ClusteringScores {
@@ -101,15 +102,7 @@ ClusteringScores score(const SynthModel& model, const ExtractResult& extract,
   return scores;
 }
 
-/// Mean of the measured values of a column (NaN when none was).
-struct Column {
-  double sum = 0;
-  int count = 0;
-  void add(double value) {
-    if (!std::isnan(value)) sum += value, ++count;
-  }
-  double mean() const { return count ? sum / count : kNotMeasured; }
-};
+using Column = hair::testing::MeanColumn;
 
 struct Row {
   Column middle, one_level_middle, two_level, one_level, two_components, one_components,

@@ -21,11 +21,12 @@
 #include "hair/strand_growing.h"
 #include "hair/synth/synth_model.h"
 #include "hair/typeify.h"
+#include "unit/mean_column.h"
 
 namespace hair::synth {
 namespace {
 
-constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+using hair::testing::kNotMeasured;
 constexpr int kStrandCount = 2000;  ///< grown strands per model (the stage grows 10k)
 /// True strands per stream (the generator's default). Fidelity is measured to the nearest
 /// true strand, so it includes half the spacing of the true strands across a strip: with
@@ -228,15 +229,7 @@ Grown grow_model(const SynthModel& model, const PolyMesh& body, const std::strin
   return {grow_strands(input, params), h};
 }
 
-/// Mean of the measured values of a column (NaN when none was).
-struct Column {
-  double sum = 0;
-  int count = 0;
-  void add(double value) {
-    if (!std::isnan(value)) sum += value, ++count;
-  }
-  double mean() const { return count ? sum / count : kNotMeasured; }
-};
+using Column = hair::testing::MeanColumn;
 
 /// One line of the table: the mean of its models (or of its presets' lines).
 struct Row {
