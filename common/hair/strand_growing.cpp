@@ -217,6 +217,7 @@ class GrowingContext {
 struct GrowingStrand {
   std::vector<Vec3> points;
   std::vector<GrowRule> rules;
+  std::vector<int32_t> clusters, groups;  ///< per point, as GrowResult::point_cluster, _group
   int64_t pushed_out = 0;
   int64_t continued_same = 0, continued_other = 0;
 };
@@ -231,13 +232,14 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
   double step_m = params.step_h * h, clearance_m = params.body_clearance_h * h;
   double lost_m = params.follow_radius_h * h;
   GrowingStrand strand;
-  strand.points.push_back(root);
-  strand.rules.push_back(GrowRule::root);
-  auto add_point = [&](Vec3 point, GrowRule rule) {
-    if (body.push_out(point, clearance_m)) ++strand.pushed_out;
+  auto add_point = [&](Vec3 point, GrowRule rule, int32_t cluster, int32_t group) {
+    if (rule != GrowRule::root && body.push_out(point, clearance_m)) ++strand.pushed_out;
     strand.points.push_back(point);
     strand.rules.push_back(rule);
+    strand.clusters.push_back(cluster);
+    strand.groups.push_back(group);
   };
+  add_point(root, GrowRule::root, root_cluster, -1);
   auto full = [&] {
     return static_cast<int64_t>(strand.points.size()) >= params.max_points_per_strand;
   };
@@ -261,7 +263,7 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
       if (!d2) break;
       Vec3 next = point + step_m * *d2;
       if (!field->contains(next)) break;
-      add_point(next, GrowRule::field);
+      add_point(next, GrowRule::field, root_cluster, -1);
       direction = *d2;
       length_m += step_m;
       point = strand.points.back();
@@ -306,7 +308,7 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
       bool turned_back = direction.squaredNorm() > 0 && following.direction.dot(direction) < 0;
       if (!following.past_end && following.distance_m <= lost_m && !turned_back) {
         direction = following.direction;
-        add_point(point + step_m * direction, GrowRule::input_strand);
+        add_point(point + step_m * direction, GrowRule::input_strand, cluster, group);
         continue;
       }
     }
@@ -328,7 +330,7 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
     // each step is pushed back out) ends the bridge where it is.
     for (double gap_m = (start - strand.points.back()).norm(); gap_m > step_m && !full();) {
       Vec3 towards = (start - strand.points.back()).normalized();
-      add_point(strand.points.back() + step_m * towards, GrowRule::bridge);
+      add_point(strand.points.back() + step_m * towards, GrowRule::bridge, cluster, group);
       double next_gap_m = (start - strand.points.back()).norm();
       if (next_gap_m > gap_m - 0.25 * step_m) break;
       gap_m = next_gap_m;
@@ -434,18 +436,23 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   std::vector<Points3f> polylines;
   polylines.reserve(grown.size());
   std::vector<GrowRule>& rules = result.point_rule;
+  std::vector<int32_t> point_cluster, point_group;
   for (size_t i = 0; i < grown.size(); ++i) {
     GrowingStrand& strand = grown[i];
     if (strand.points.size() < 2) {
       Vec3 normal = roots.normals.row(static_cast<Eigen::Index>(i)).cast<double>().transpose();
       strand.points.push_back(strand.points.front() + params.step_h * h * normal);
       strand.rules.push_back(GrowRule::field);
+      strand.clusters.push_back(strand.clusters.front());
+      strand.groups.push_back(-1);
     }
     Points3f polyline(static_cast<Eigen::Index>(strand.points.size()), 3);
     for (size_t k = 0; k < strand.points.size(); ++k)
       polyline.row(static_cast<Eigen::Index>(k)) = strand.points[k].cast<float>().transpose();
     polylines.push_back(std::move(polyline));
     rules.insert(rules.end(), strand.rules.begin(), strand.rules.end());
+    point_cluster.insert(point_cluster.end(), strand.clusters.begin(), strand.clusters.end());
+    point_group.insert(point_group.end(), strand.groups.begin(), strand.groups.end());
     result.points_pushed_out += strand.pushed_out;
     result.continuations_same_cluster += strand.continued_same;
     result.continuations_other_cluster += strand.continued_other;
@@ -454,6 +461,8 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   result.strands.strand_attributes["cluster"] = root_cluster;
   result.strands.strand_attributes["root_triangle"] = roots.triangle;
   result.strands.strand_attributes["root_normal"] = roots.normals;
+  result.strands.point_attributes["cluster"] = std::move(point_cluster);
+  result.strands.point_attributes["group"] = std::move(point_group);
   check_strand_set(result.strands);
   return result;
 }

@@ -70,8 +70,12 @@ struct GrownCluster {
 };
 
 struct GrowResult {
-  /// Grown strands, root first. strand_attributes: "cluster" (int32), "root_triangle"
-  /// (int32, body triangle), "root_normal" (#strands x 3).
+  /// Grown strands, root first. strand_attributes: "cluster" (int32, the root's),
+  /// "root_triangle" (int32, body triangle), "root_normal" (#strands x 3).
+  /// point_attributes (int32): "cluster", the cluster each point belongs to: the root's
+  /// along the root and the field, then the cluster of the group followed or bridged to,
+  /// so that a strand can run through several clusters (a ponytail's cap, then its tail);
+  /// "group", the input group followed or bridged to, -1 at the root and along the field.
   StrandSet strands;
   /// Per point: how the segment ending there was grown (GrowRule::root at roots).
   std::vector<GrowRule> point_rule;

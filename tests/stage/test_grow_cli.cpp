@@ -100,7 +100,7 @@ void expect_valid_strands(const Outputs& out) {
   EXPECT_EQ(inspect.exit_code, 0) << inspect.out << inspect.err;
   std::vector<std::string> report = text_lines(inspect.out);
   ASSERT_FALSE(report.empty());
-  EXPECT_EQ(report.back(), "valid: hairstyle.strands v1");
+  EXPECT_EQ(report.back(), "valid: hairstyle.strands v2");
 
   hair::h5::File file = hair::h5::File::open_read_only(out.strands);
   hair::GrownStrands grown = hair::read_grown_strands(file);
@@ -153,6 +153,39 @@ void expect_valid_strands(const Outputs& out) {
   // Both phases happen: the cap's field, then the input strands below it.
   EXPECT_GT(per_rule[static_cast<int8_t>(hair::GrowRule::field)], 0);
   EXPECT_GT(per_rule[static_cast<int8_t>(hair::GrowRule::input_strand)], 0);
+
+  // Every point has a cluster and a group: the root's cluster without a group at the root
+  // and along the field; the followed group's cluster along input strands. Strands run
+  // from one cluster into another (the cap into the braid or the tail).
+  const auto& point_cluster =
+      std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
+  const auto& point_group = std::get<std::vector<int32_t>>(strands.point_attributes.at("group"));
+  ASSERT_EQ(static_cast<int64_t>(point_cluster.size()), strands.point_count());
+  ASSERT_EQ(static_cast<int64_t>(point_group.size()), strands.point_count());
+  int64_t crossing = 0;
+  for (int64_t s = 0; s < kStrands; ++s) {
+    auto root = static_cast<size_t>(strands.offsets[s]);
+    EXPECT_EQ(point_cluster[root], cluster[static_cast<size_t>(s)]) << "strand " << s;
+    bool crosses = false;
+    for (auto row = root; row < static_cast<size_t>(strands.offsets[s + 1]); ++row) {
+      auto r = static_cast<hair::GrowRule>(rule[row]);
+      if (r == hair::GrowRule::root || r == hair::GrowRule::field) {
+        ASSERT_EQ(point_group[row], -1) << "strand " << s;
+        ASSERT_EQ(point_cluster[row], point_cluster[root]) << "strand " << s;
+      } else {
+        ASSERT_GE(point_group[row], 0) << "strand " << s;
+        ASSERT_LT(point_group[row], static_cast<int32_t>(input.group_cluster.size()));
+        if (r == hair::GrowRule::input_strand) {
+          ASSERT_EQ(point_cluster[row], input.group_cluster[static_cast<size_t>(point_group[row])]);
+        }
+      }
+      crosses = crosses || point_cluster[row] != point_cluster[root];
+    }
+    crossing += crosses;
+  }
+  EXPECT_GT(crossing, kStrands / 50);
+  std::printf("[ grow     ] %s: %lld strands run through more than one cluster\n",
+              out.strands.parent_path().filename().c_str(), static_cast<long long>(crossing));
   std::printf("[ grow     ] %s: %lld points; field %lld, input_strand %lld, bridge %lld\n",
               out.strands.parent_path().filename().c_str(),
               static_cast<long long>(strands.point_count()),

@@ -39,7 +39,7 @@ cv::Mat grown_picture(const h5::File& strands, const h5::File& extract,
   switch (colouring) {
     case GrownColouring::cluster:
       colours =
-          colours_by_id(set, std::get<std::vector<int32_t>>(set.strand_attributes.at("cluster")));
+          colours_by_point_id(std::get<std::vector<int32_t>>(set.point_attributes.at("cluster")));
       break;
     case GrownColouring::direction:
       colours = colours_root_to_tip(set);

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -157,15 +158,30 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
   return canvas;
 }
 
+cv::Vec3b id_colour(int32_t id) {
+  // Golden-angle hues give neighbouring ids distinct colours; -1 (none) is dark.
+  double hue = std::fmod(std::max(0, id) * 137.508, 360.0);
+  cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(hue / 2, 200, id < 0 ? 60 : 220)), bgr;
+  cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
+  return bgr.at<cv::Vec3b>(0, 0);
+}
+
 PointColours colours_by_id(const StrandSet& strands, const std::vector<int32_t>& strand_ids) {
   PointColours colours(static_cast<size_t>(strands.point_count()));
-  for (int64_t s = 0; s < strands.strand_count(); ++s) {
-    // Golden-angle hues give neighbouring ids distinct colours.
-    double hue = std::fmod(std::max(0, strand_ids[s]) * 137.508, 360.0);
-    cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(hue / 2, 200, strand_ids[s] < 0 ? 60 : 220)), bgr;
-    cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
+  for (int64_t s = 0; s < strands.strand_count(); ++s)
     std::fill(colours.begin() + strands.offsets[s], colours.begin() + strands.offsets[s + 1],
-              bgr.at<cv::Vec3b>(0, 0));
+              id_colour(strand_ids[s]));
+  return colours;
+}
+
+PointColours colours_by_point_id(const std::vector<int32_t>& point_ids) {
+  std::map<int32_t, cv::Vec3b> cache;
+  PointColours colours;
+  colours.reserve(point_ids.size());
+  for (int32_t id : point_ids) {
+    auto found = cache.find(id);
+    if (found == cache.end()) found = cache.emplace(id, id_colour(id)).first;
+    colours.push_back(found->second);
   }
   return colours;
 }

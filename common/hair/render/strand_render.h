@@ -42,6 +42,12 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
 /// `ids` (e.g. group or cluster ids): #points colours.
 PointColours colours_by_id(const StrandSet& strands, const std::vector<int32_t>& strand_ids);
 
+/// One colour per id (golden-angle hues, so neighbouring ids differ; -1, none, dark).
+cv::Vec3b id_colour(int32_t id);
+
+/// Every point in the colour of its own id (#points ids).
+PointColours colours_by_point_id(const std::vector<int32_t>& point_ids);
+
 /// A gradient from root (dark blue) to tip (yellow) along every strand.
 PointColours colours_root_to_tip(const StrandSet& strands);
 
