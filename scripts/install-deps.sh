@@ -18,7 +18,7 @@ packages=(
   libeigen3-dev libassimp-dev libhdf5-dev libcli11-dev libspdlog-dev libfmt-dev
   libnanoflann-dev nlohmann-json3-dev libssl-dev libspectra-dev
   libsuitesparse-dev
-  libopencv-imgproc-dev libopencv-imgcodecs-dev
+  libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-ml-dev
   # tests
   libgtest-dev libgmock-dev
   # h5ls, h5dump: to look into the pipeline's outputs
