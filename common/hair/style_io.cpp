@@ -8,7 +8,10 @@
 #include "hair/grow_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
+#include "hair/h5/enum_dataset.h"
+#include "hair/h5/schema.h"
 #include "hair/h5/schema_validation.h"
+#include "hair/style_model_io.h"
 
 namespace hair {
 
@@ -48,6 +51,51 @@ StyleFeatureInput read_style_feature_input(const h5::File& extract, const h5::Fi
   input.head_height_m = grown.head_height_m;
   input.source = strands.name();
   return input;
+}
+
+const h5::EnumMembers& style_members() {
+  static const h5::EnumMembers members = {
+      {"none", -1}, {"normal", 0}, {"fixed", 1}, {"short", 2}, {"braided", 3}};
+  return members;
+}
+
+void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleFeatures& features,
+                       const std::string& model_file, const std::string& model_feature_set,
+                       double head_height_m) {
+  using RowMajorD = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  using RowMajorI = Eigen::Matrix<int32_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  h5::write_schema_attributes(file, h5::Schema::find(kStylesSchema));
+  h5::write_string_attribute(file, "/", "unit", "m");
+  h5::write_double_attribute(file, "/", "head_height_m", head_height_m);
+  h5::write_string_attribute(file, "/", "classifier", style_classifier_name(styles.classifier));
+  h5::write_string_attribute(file, "/", "model_file", model_file);
+  h5::write_int64_attribute(file, "/", "model_version", kStyleModelVersion);
+  h5::write_string_attribute(file, "/", "model_feature_set", model_feature_set);
+  h5::write_enum_dataset(file, "/clusters/style", styles.style, style_members());
+  h5::write_enum_dataset(file, "/clusters/svm_style", styles.svm_style, style_members());
+  h5::write_enum_dataset(file, "/clusters/forest_style", styles.forest_style, style_members());
+  h5::write_vector(file, "/clusters/strand_count", features.strand_count);
+  h5::write_vector(file, "/clusters/point_count", features.point_count);
+  h5::write_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values",
+                                           RowMajorD(styles.svm_decision_values));
+  h5::write_matrix<int32_t, Eigen::Dynamic>(file, "/clusters/svm_votes",
+                                            RowMajorI(styles.svm_votes));
+  h5::write_matrix<double, Eigen::Dynamic>(file, "/clusters/forest_vote_fraction",
+                                           RowMajorD(styles.forest_vote_fraction));
+  std::vector<int8_t> classes(styles.classes.begin(), styles.classes.end());
+  h5::write_enum_dataset(file, "/classes/style", classes, style_members());
+  const std::vector<std::string>& names = paper_feature_names();
+  for (size_t f = 0; f < names.size(); ++f) {
+    std::vector<double> column(static_cast<size_t>(features.paper_rows.rows()));
+    for (size_t c = 0; c < column.size(); ++c)
+      column[c] = features.paper_rows(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(f));
+    h5::write_vector(file, "/features/" + names[f], column);
+  }
+}
+
+std::vector<int8_t> read_cluster_styles(const h5::File& file) {
+  h5::require_schema(file, kStylesSchema);
+  return h5::read_enum_dataset(file, "/clusters/style", style_members());
 }
 
 }  // namespace hair

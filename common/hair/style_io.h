@@ -2,6 +2,10 @@
 // Reading the classify stage's inputs and writing its output, styles.h5
 // (schemas/styles.json).
 
+#include <string>
+
+#include "hair/cluster_styles.h"
+#include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
 #include "hair/style_features.h"
 
@@ -13,5 +17,21 @@ namespace hair {
 /// file's schema and that the three come from the same model.
 StyleFeatureInput read_style_feature_input(const h5::File& extract, const h5::File& clusters,
                                            const h5::File& strands);
+
+/// Schema name of the classify stage's output (schemas/styles.json).
+inline constexpr const char* kStylesSchema = "hairstyle.styles";
+
+/// Members of the style enum datasets of styles.h5: none (-1), normal, fixed, short,
+/// braided.
+const h5::EnumMembers& style_members();
+
+/// Writes styles.h5 (schemas/styles.json) but for provenance.
+void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleFeatures& features,
+                       const std::string& model_file, const std::string& model_feature_set,
+                       double head_height_m);
+
+/// What the renderer and later stages read of styles.h5: the style of every cluster
+/// (-1 none), after checking the schema.
+std::vector<int8_t> read_cluster_styles(const h5::File& file);
 
 }  // namespace hair

@@ -21,6 +21,7 @@
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
 #include "hair/strand_set.h"
+#include "stage/sample_pipeline.h"
 #include "support/run_command.h"
 
 namespace {
@@ -31,47 +32,12 @@ using hair::test::run_command;
 using hair::test::TemporaryDirectory;
 using hair::test::text_lines;
 
-const fs::path kBin = fs::path(HAIR_BIN_DIR);
-const fs::path kSamples = fs::path(HAIR_SOURCE_DIR) / "data" / "samples";
 constexpr int kStrands = 2000;
 
-/// Runs a stage and expects it to succeed.
-void run_stage(const std::string& stage, std::vector<std::string> arguments) {
-  arguments.insert(arguments.end(), {"--quiet", "--reproducible"});
-  auto result = run_command(kBin / stage, arguments);
-  ASSERT_EQ(result.exit_code, 0) << stage << ": " << result.err;
-}
-
-/// The pipeline's files for one model, up to strands.h5.
-struct Outputs {
-  fs::path extract, types, middle, clusters, strands;
-  std::vector<std::string> grow_inputs() const {
-    return {extract.string(), types.string(), clusters.string()};
-  }
-};
-
-/// Runs extract to cluster-all on `mesh` in `folder`, then grow with kStrands strands if
-/// `grow`.
-Outputs run_pipeline(const fs::path& folder, const fs::path& mesh, bool grow) {
-  fs::create_directories(folder);
-  Outputs out{folder / "extract.h5", folder / "types.h5", folder / "middle.h5",
-              folder / "clusters.h5", folder / "strands.h5"};
-  if (!fs::exists(out.clusters)) {
-    run_stage("extract", {mesh.string(), "--body", (kSamples / "body.obj").string(), "--unit_scale",
-                          "0.1", "-o", out.extract.string()});
-    run_stage("typeify", {out.extract.string(), "-o", out.types.string()});
-    run_stage("cluster-middle", {out.types.string(), "-o", out.middle.string()});
-    run_stage("cluster-all",
-              {out.types.string(), out.middle.string(), "-o", out.clusters.string()});
-  }
-  if (grow && !fs::exists(out.strands)) {
-    std::vector<std::string> arguments = out.grow_inputs();
-    arguments.insert(arguments.end(),
-                     {"--strand_count", std::to_string(kStrands), "-o", out.strands.string()});
-    run_stage("grow", arguments);
-  }
-  return out;
-}
+using Outputs = hair::test::SampleOutputs;
+using hair::test::kBin;
+using hair::test::kSamples;
+using hair::test::run_stage;
 
 /// The samples' pipeline files, made on first use and kept for the suite. ctest runs
 /// every test in a process of its own, so each makes only what it uses.
@@ -85,7 +51,8 @@ class GrowCli : public ::testing::Test {
   }
   /// braid01 or ponytail01 up to clusters.h5, and strands.h5 if `grown`.
   static Outputs sample(const std::string& model, bool grown) {
-    return run_pipeline(directory() / model, kSamples / "hair" / (model + ".obj"), grown);
+    return hair::test::run_sample_pipeline(
+        directory() / model, kSamples / "hair" / (model + ".obj"), grown ? kStrands : 0);
   }
 
  private:

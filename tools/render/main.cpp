@@ -1,8 +1,9 @@
 // hair-render: a picture of what a stage produced: the input strands of extract.h5
 // coloured by group, root-to-tip direction, orientation rule or patch kind; with
 // --extract, the same strands coloured by the group types of types.h5, the middle
-// clusters of middle.h5 or the hair clusters of clusters.h5. The file's `schema`
-// attribute says which it is.
+// clusters of middle.h5 or the hair clusters of clusters.h5; the grown strands of
+// strands.h5, or, with --strands, in the paper's colours of the styles of styles.h5. The
+// file's `schema` attribute says which it is.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -15,6 +16,8 @@
 #include "hair/render/cluster_picture.h"
 #include "hair/render/extract_picture.h"
 #include "hair/render/grow_picture.h"
+#include "hair/render/style_picture.h"
+#include "hair/style_io.h"
 #include "hair/typeify_io.h"
 
 namespace {
@@ -22,7 +25,8 @@ namespace {
 /// The picture of `file` by the schema it names; an empty `colouring` is the file's
 /// default, an empty title in `options` names the file and the colouring.
 cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
-                const std::string& colouring, hair::RenderOptions options) {
+                const std::string& strands_path, const std::string& colouring,
+                hair::RenderOptions options) {
   if (!hair::h5::has_attribute(file, "/", "schema"))
     throw hair::Error::bad_input(file.name(), "has no schema attribute: not a hairstyle file");
   std::string schema = hair::h5::read_string_attribute(file, "/", "schema");
@@ -40,10 +44,16 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
     return hair::extract_picture(file, how, options);
   }
   if (schema != hair::kTypesSchema && schema != hair::kMiddleSchema &&
-      schema != hair::kClustersSchema && schema != hair::kStrandsSchema)
+      schema != hair::kClustersSchema && schema != hair::kStrandsSchema &&
+      schema != hair::kStylesSchema)
     throw hair::Error::bad_input(file.name(), "schema '" + schema +
                                                   "' is not one hair-render draws (extract, "
-                                                  "types, middle, clusters or strands)");
+                                                  "types, middle, clusters, strands or styles)");
+  if (!strands_path.empty() != (schema == hair::kStylesSchema))
+    throw hair::Error::usage(schema == hair::kStylesSchema
+                                 ? file.name() +
+                                       " (styles) needs --strands: the strands.h5 it classified"
+                                 : "--strands is for styles.h5, not " + file.name());
   if (extract_path.empty())
     throw hair::Error::usage(file.name() + " (" + schema +
                              ") needs --extract: the extract.h5 it was made from");
@@ -51,6 +61,11 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
     throw hair::Error::usage("--color-by is for extract.h5, clusters.h5 and strands.h5, not " +
                              file.name() + " (" + schema + ")");
   hair::h5::File extract = hair::h5::File::open_read_only(extract_path);
+  if (schema == hair::kStylesSchema) {
+    colour_word("style");
+    return hair::styles_picture(file, hair::h5::File::open_read_only(strands_path), extract,
+                                options);
+  }
   if (schema == hair::kStrandsSchema) {
     hair::GrownColouring how = hair::parse_grown_colouring(colour_word("cluster"));
     return hair::grown_picture(file, extract, options, how);
@@ -72,15 +87,19 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
 int main(int argc, char** argv) {
   CLI::App app("Render a hairstyle HDF5 file as a PNG (front, side and back views).",
                "hair-render");
-  std::string input_path, output_path, colouring, title, extract_path;
+  std::string input_path, output_path, colouring, title, extract_path, strands_path;
   int size_px = 512;
   bool no_body = false;
   app.add_option("FILE", input_path,
-                 "extract.h5; or, with --extract, types.h5, middle.h5, clusters.h5 or strands.h5")
+                 "extract.h5; or, with --extract, types.h5, middle.h5, clusters.h5 or strands.h5; "
+                 "or, with --extract and --strands, styles.h5")
       ->required();
   app.add_option("--extract", extract_path,
                  "the extract.h5 that types.h5, middle.h5, clusters.h5 or strands.h5 was made "
                  "from");
+  app.add_option("--strands", strands_path,
+                 "the strands.h5 that styles.h5 classified (its strands are drawn in the paper's "
+                 "colours of their clusters' styles)");
   app.add_option("-o,--output", output_path, "PNG to write")->required();
   app.add_option("--color-by", colouring,
                  "extract.h5: group (default), direction, rule or kind; clusters.h5: cluster "
@@ -104,7 +123,7 @@ int main(int argc, char** argv) {
     options.draw_body = !no_body;
     options.title = title;
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
-    hair::write_png(picture(file, extract_path, colouring, options), output_path);
+    hair::write_png(picture(file, extract_path, strands_path, colouring, options), output_path);
   } catch (const hair::Error& e) {
     std::cerr << "hair-render: error: " << e.what() << "\n";
     return e.exit_code();

@@ -16,7 +16,14 @@
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
 #include "hair/h5/schema_validation.h"
+#include "hair/atomic_file.h"
+#include "hair/hair_style.h"
+#include "hair/style_classifier.h"
+#include "hair/style_cross_validation.h"
+#include "hair/style_cross_validation_markdown.h"
 #include "hair/style_features.h"
+#include "hair/style_labels.h"
+#include "hair/style_model_io.h"
 #include "hair/style_io.h"
 #include "hair/style_table.h"
 #include "hair/style_training.h"
@@ -61,7 +68,11 @@ void add_model(Tables& tables, const fs::path& folder, const std::vector<fs::pat
   hair::StyleFeatureInput input = hair::read_style_feature_input(extract, clusters, strands);
   hair::StyleFeatures features = hair::style_features(input, params);
   auto group_count = static_cast<int32_t>(input.group_cluster.size());
-  std::vector<int8_t> group_style = truth_group_styles(truth_path, extract, group_count);
+  std::vector<int8_t> group_style =
+      real ? hair::group_styles_from_patch_labels(
+                 hair::h5::read_vector<int32_t>(extract, "/mesh/face_group"), group_count,
+                 sources.patch_labels, model)
+           : truth_group_styles(truth_path, extract, group_count);
   std::vector<int32_t> face_count = hair::h5::read_vector<int32_t>(extract, "/groups/face_count");
   std::vector<double> weight(face_count.begin(), face_count.end());
   std::vector<int8_t> label = hair::cluster_styles_by_majority(input.group_cluster, group_style,
@@ -71,26 +82,76 @@ void add_model(Tables& tables, const fs::path& folder, const std::vector<fs::pat
   for (int32_t c = 0; c < input.cluster_count; ++c) {
     auto i = static_cast<size_t>(c);
     if (label[i] < 0 || features.strand_count[i] == 0) continue;
-    tables.paper.append(features.paper_rows.row(c), label[i], model, c, false, purity[i]);
-    tables.raw.append(features.raw_rows.row(c), label[i], model, c, false, purity[i]);
+    tables.paper.append(features.paper_rows.row(c), label[i], model, c, real, purity[i]);
+    tables.raw.append(features.raw_rows.row(c), label[i], model, c, real, purity[i]);
   }
+}
+
+/// Rows per class and source, as a Markdown table.
+std::string data_summary(const hair::StyleTable& table) {
+  std::map<int8_t, std::array<int, 2>> counts;
+  std::map<std::string, int> models[2];
+  for (int64_t r = 0; r < table.row_count(); ++r) {
+    auto i = static_cast<size_t>(r);
+    ++counts[table.label[i]][table.real_mesh[i]];
+    ++models[table.real_mesh[i]][table.model[i]];
+  }
+  std::string text = "| style | synthetic clusters | real-mesh clusters |\n|---|---:|---:|\n";
+  for (const auto& [style, count] : counts)
+    text += "| " + std::string(hair::hair_style_name(static_cast<hair::HairStyle>(style))) + " | " +
+            std::to_string(count[0]) + " | " + std::to_string(count[1]) + " |\n";
+  text += "\n" + std::to_string(table.row_count()) + " clusters from " +
+          std::to_string(models[0].size()) + " synthetic and " + std::to_string(models[1].size()) +
+          " real meshes.\n";
+  return text;
+}
+
+std::vector<int32_t> int_labels(const hair::StyleTable& table) {
+  return std::vector<int32_t>(table.label.begin(), table.label.end());
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  hair::AtomicFile output(path);
+  {
+    std::ofstream stream(output.temporary_path());
+    stream << text;
+    if (!stream.flush()) throw hair::Error::runtime(path.string(), "cannot write");
+  }
+  output.commit();
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("Train and cross-validate the hairstyle classifiers of classify.",
+  CLI::App app("Train and cross-validate the hairstyle classifiers of classify: the SVM with the "
+               "Pearson VII kernel and the random forest (paper section 5.1), on the paper's "
+               "features and on the 190 raw features of section 6.1.",
                "hair-train-style");
-  std::vector<std::string> runs, truth;
-  std::string tables_folder;
+  std::vector<std::string> runs, truth, tables_in;
+  std::string labels_path, tables_folder, report_path, models_folder;
+  hair::StyleClassifierParams params;
   app.add_option("--runs", runs,
-                 "pipeline output folder (OUT of Makefile.pipeline): every "
-                 "subfolder with extract.h5, clusters.h5 and strands.h5 is a model")
-      ->required()
+                 "pipeline output folder (OUT of Makefile.pipeline): every subfolder with "
+                 "extract.h5, clusters.h5 and strands.h5 is a model")
       ->check(CLI::ExistingDirectory);
   app.add_option("--truth", truth, "folder of synthetic truth files <model>.truth.h5")
       ->check(CLI::ExistingDirectory);
+  app.add_option("--labels", labels_path, "hand labels of real meshes per patch "
+                                          "(data/labels/makehuman_styles.tsv)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--tables-in", tables_in,
+                 "instead of --runs: the features_paper.tsv and features_raw.tsv of an earlier "
+                 "--tables")
+      ->expected(2)
+      ->check(CLI::ExistingFile);
   app.add_option("--tables", tables_folder, "write the feature tables (TSV and ARFF) here");
+  app.add_option("--report", report_path, "write the cross-validation report (Markdown) here");
+  app.add_option("--models", models_folder,
+                 "write the model trained on all rows with the paper's features here "
+                 "(style_paper.yml)");
+  app.add_option("--folds", params.folds, "folds of the cross-validation")
+      ->check(CLI::Range(2, 100));
+  app.add_option("--seed", params.seed, "seed of the fold assignment");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -99,22 +160,38 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    hair::StyleFeatureParams params;
+    if (runs.empty() == tables_in.empty())
+      throw hair::Error::usage("give either --runs (with --truth or --labels) or --tables-in");
+    params.check();
+    auto start = std::chrono::steady_clock::now();
+    hair::StyleFeatureParams feature_params;
     Tables tables;
-    tables.paper.feature_names = hair::paper_feature_names();
-    tables.raw.feature_names = hair::raw_feature_names(params.raw_points);
-    std::vector<fs::path> truth_folders(truth.begin(), truth.end());
-    for (const std::string& run : runs) {
-      std::vector<fs::path> models;
-      for (const auto& entry : fs::directory_iterator(run))
-        if (entry.is_directory() && fs::exists(entry.path() / "strands.h5"))
-          models.push_back(entry.path());
-      std::sort(models.begin(), models.end());
-      for (const fs::path& folder : models) add_model(tables, folder, truth_folders, params);
+    if (!tables_in.empty()) {
+      tables.paper = hair::read_style_table_tsv(tables_in[0]);
+      tables.raw = hair::read_style_table_tsv(tables_in[1]);
+    } else {
+      tables.paper.feature_names = hair::paper_feature_names();
+      tables.raw.feature_names = hair::raw_feature_names(feature_params.raw_points);
+      LabelSources sources;
+      sources.truth_folders.assign(truth.begin(), truth.end());
+      if (!labels_path.empty()) sources.patch_labels = hair::read_patch_style_labels(labels_path);
+      for (const std::string& run : runs) {
+        std::vector<fs::path> models;
+        for (const auto& entry : fs::directory_iterator(run))
+          if (entry.is_directory() && fs::exists(entry.path() / "strands.h5"))
+            models.push_back(entry.path());
+        std::sort(models.begin(), models.end());
+        for (const fs::path& folder : models) add_model(tables, folder, sources, feature_params);
+      }
     }
+    spdlog::info("{} labelled clusters", tables.paper.row_count());
+    if (tables.paper.row_count() < params.folds)
+      throw hair::Error::usage("only " + std::to_string(tables.paper.row_count()) +
+                               " labelled clusters, fewer than the " +
+                               std::to_string(params.folds) + " folds");
     if (!tables_folder.empty()) {
-      fs::create_directories(tables_folder);
       fs::path folder(tables_folder);
+      fs::create_directories(folder);
       hair::write_style_table_tsv(folder / "features_paper.tsv", tables.paper);
       hair::write_style_table_tsv(folder / "features_raw.tsv", tables.raw);
       hair::write_style_table_arff(folder / "features_paper.arff", tables.paper,
@@ -122,7 +199,34 @@ int main(int argc, char** argv) {
       hair::write_style_table_arff(folder / "features_raw.arff", tables.raw,
                                    "hairstyle_raw_features");
     }
-    std::cout << tables.paper.row_count() << " labelled clusters\n";
+    if (!report_path.empty()) {
+      std::vector<bool> real(tables.paper.real_mesh.begin(), tables.paper.real_mesh.end());
+      std::string report = "## Data\n\n" + data_summary(tables.paper);
+      for (const auto* table : {&tables.paper, &tables.raw}) {
+        bool paper = table == &tables.paper;
+        auto cv_start = std::chrono::steady_clock::now();
+        hair::StyleCrossValidation cv =
+            hair::style_cross_validation(table->rows, int_labels(*table), real, params);
+        double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - cv_start).count();
+        report += "\n## " + std::string(paper ? "The paper's features" : "Raw features") + " (" +
+                  std::to_string(table->rows.cols()) + " dimensions)\n\n" +
+                  hair::style_cross_validation_markdown(cv, "real meshes") + "\n" +
+                  fmt::format("Cross-validation of both classifiers, grid search included: {:.1f} s.\n", seconds);
+        spdlog::info("{} features: SVM {:.1f}%, random forest {:.1f}%", paper ? "paper" : "raw",
+                     100 * cv.svm.accuracy, 100 * cv.forest.accuracy);
+      }
+      write_text(report_path, report);
+    }
+    if (!models_folder.empty()) {
+      fs::create_directories(models_folder);
+      hair::StyleModel model = hair::trained_style_model(
+          tables.paper.rows, int_labels(tables.paper), "paper", tables.paper.feature_names, params);
+      hair::write_style_model(fs::path(models_folder) / "style_paper.yml", model);
+      spdlog::info("wrote {}", (fs::path(models_folder) / "style_paper.yml").string());
+    }
+    spdlog::info("done in {:.1f} s",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   } catch (const hair::Error& e) {
     std::cerr << "hair-train-style: error: " << e.what() << "\n";
     return e.exit_code();

@@ -1,0 +1,67 @@
+#include "hair/render/style_picture.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include "hair/error.h"
+#include "hair/extract_io.h"
+#include "hair/grow_io.h"
+#include "hair/h5/dataset.h"
+#include "hair/h5/schema_validation.h"
+#include "hair/style_io.h"
+
+namespace hair {
+
+cv::Vec3b style_colour(int8_t style) {
+  switch (style) {
+    case 0:
+      return {40, 210, 240};  // normal: yellow
+    case 1:
+      return {30, 75, 140};  // fixed: brown
+    case 2:
+      return {60, 180, 60};  // short: green
+    case 3:
+      return {220, 110, 30};  // braided: blue
+    default:
+      return {150, 150, 150};
+  }
+}
+
+cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5::File& extract,
+                       const RenderOptions& options) {
+  std::vector<int8_t> cluster_style = read_cluster_styles(styles);
+  GrownStrands grown = read_grown_strands(strands);
+  h5::require_schema(extract, kExtractSchema);
+  const StrandSet& set = grown.strands;
+  const auto& point_cluster = std::get<std::vector<int32_t>>(set.point_attributes.at("cluster"));
+  PointColours colours;
+  colours.reserve(point_cluster.size());
+  for (int32_t cluster : point_cluster) {
+    if (cluster < 0 || cluster >= static_cast<int32_t>(cluster_style.size()))
+      throw Error::bad_input(styles.name(), "has " + std::to_string(cluster_style.size()) +
+                                                " clusters, " + strands.name() +
+                                                " a point of cluster " + std::to_string(cluster) +
+                                                ": made from another model");
+    colours.push_back(style_colour(cluster_style[static_cast<size_t>(cluster)]));
+  }
+  cv::Mat image = render_strands(set, colours, h5::read_matrix<float, 3>(extract, "/body/vertices"),
+                                 h5::read_matrix<int32_t, 3>(extract, "/body/triangles"), options);
+  // Legend: the four styles in their colours, with how many clusters have each.
+  std::array<int, 4> count{};
+  for (int8_t style : cluster_style)
+    if (style >= 0 && style < 4) ++count[static_cast<size_t>(style)];
+  const char* names[] = {"normal", "fixed", "short", "braided"};
+  int x = 10;
+  for (int8_t style : {1, 3, 2, 0}) {
+    std::string text =
+        std::string(names[style]) + " " + std::to_string(count[static_cast<size_t>(style)]);
+    cv::Vec3b colour = style_colour(style);
+    cv::rectangle(image, cv::Rect(x, 34, 12, 12), cv::Scalar(colour[0], colour[1], colour[2]),
+                  cv::FILLED);
+    cv::putText(image, text, cv::Point(x + 16, 45), cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+    x += 30 + 9 * static_cast<int>(text.size());
+  }
+  return image;
+}
+
+}  // namespace hair

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "hair/h5/file.h"
+#include "hair/render/strand_render.h"
+
+namespace hair {
+
+/// The paper's colours of the styles (Figure 9), BGR: fixed brown, braided blue, short
+/// green, normal yellow; grey for a cluster without a style.
+cv::Vec3b style_colour(int8_t style);
+
+/// Renders the grown strands of `strands` (strands.h5), every point in the paper's colour
+/// of its cluster's style in `styles` (styles.h5), over the body of `extract`, with a
+/// legend and the styles found. Errors (bad_input) name the file at fault, e.g. files of
+/// different models.
+cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5::File& extract,
+                       const RenderOptions& options);
+
+}  // namespace hair
