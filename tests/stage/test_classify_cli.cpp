@@ -74,7 +74,9 @@ std::multiset<std::string> styles_found(const fs::path& path) {
   EXPECT_EQ(inspect.exit_code, 0) << inspect.out << inspect.err;
   std::vector<std::string> report = text_lines(inspect.out);
   EXPECT_FALSE(report.empty());
-  if (!report.empty()) EXPECT_EQ(report.back(), "valid: hairstyle.styles v1");
+  if (!report.empty()) {
+    EXPECT_EQ(report.back(), "valid: hairstyle.styles v1");
+  }
   hair::h5::File file = hair::h5::File::open_read_only(path);
   EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "classify");
   EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "classifier"), "random_forest");

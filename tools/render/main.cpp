@@ -1,10 +1,12 @@
 // hair-render: a picture of what a stage produced: the input strands of extract.h5
 // coloured by group, root-to-tip direction, orientation rule or patch kind; with
 // --extract, the same strands coloured by the group types of types.h5, the middle
-// clusters of middle.h5 or the hair clusters of clusters.h5; the grown strands of
-// strands.h5, or, with --strands, in the paper's colours of the styles of styles.h5. The
-// file's `schema` attribute says which it is.
+// clusters of middle.h5 or the hair clusters of clusters.h5, or by hand-labelled styles
+// (--style-labels, data/labels); the grown strands of strands.h5, or, with --strands,
+// in the paper's colours of the styles of styles.h5. The file's `schema` attribute says
+// which it is.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 
 #include "hair/clustering_io.h"
@@ -12,12 +14,15 @@
 #include "hair/extract_io.h"
 #include "hair/grow_io.h"
 #include "hair/h5/attribute.h"
+#include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
+#include "hair/h5/schema_validation.h"
 #include "hair/render/cluster_picture.h"
 #include "hair/render/extract_picture.h"
 #include "hair/render/grow_picture.h"
 #include "hair/render/style_picture.h"
 #include "hair/style_io.h"
+#include "hair/style_labels.h"
 #include "hair/typeify_io.h"
 
 namespace {
@@ -82,12 +87,34 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
   return hair::clusters_picture(file, extract, options, before_split);
 }
 
+/// The picture of extract.h5 `file` coloured by the styles that the table
+/// `labels_path` gives the patches of `model`.
+cv::Mat style_label_picture(const hair::h5::File& file, const std::string& labels_path,
+                            const std::string& model, hair::RenderOptions options) {
+  hair::h5::require_schema(file, hair::kExtractSchema);
+  std::vector<hair::PatchStyleLabel> labels = hair::read_patch_style_labels(labels_path);
+  auto group_count =
+      static_cast<int32_t>(hair::h5::read_vector<int32_t>(file, "/groups/face_count").size());
+  std::vector<int8_t> styles;
+  try {
+    styles = hair::group_styles_from_patch_labels(
+        hair::h5::read_vector<int32_t>(file, "/mesh/face_group"), group_count, labels, model);
+  } catch (const hair::Error& e) {
+    throw hair::Error::bad_input(labels_path, file.name() + ": " + e.what());
+  }
+  if (std::count(styles.begin(), styles.end(), -1) == group_count)
+    throw hair::Error::bad_input(labels_path, "labels no patch of model '" + model + "'");
+  if (options.title.empty()) options.title = model + ": hand-labelled styles";
+  return hair::style_picture(file, styles, options);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app("Render a hairstyle HDF5 file as a PNG (front, side and back views).",
                "hair-render");
-  std::string input_path, output_path, colouring, title, extract_path, strands_path;
+  std::string input_path, output_path, colouring, title, extract_path, strands_path, labels_path,
+      model;
   int size_px = 512;
   bool no_body = false;
   app.add_option("FILE", input_path,
@@ -107,6 +134,14 @@ int main(int argc, char** argv) {
                  "them); strands.h5: cluster (default), rule (how each segment was grown) or "
                  "direction. types.h5 is coloured by type, middle.h5 by middle cluster (other "
                  "groups grey)");
+  auto* labels_option = app.add_option(
+      "--style-labels", labels_path,
+      "extract.h5: colour the groups by the hand-labelled styles of --model in this table "
+      "(data/labels/makehuman_styles.tsv) instead of --color-by");
+  auto* model_option =
+      app.add_option("--model", model, "the model whose --style-labels to use (e.g. braid01)")
+          ->needs(labels_option);
+  labels_option->needs(model_option)->excludes("--color-by")->excludes("--extract");
   app.add_option("--size", size_px, "pixels per view")->check(CLI::Range(64, 4096));
   app.add_option("--title", title, "text at the top left (default: the file and colouring)");
   app.add_flag("--no-body", no_body, "do not draw the body (it still hides what is behind it)");
@@ -123,7 +158,11 @@ int main(int argc, char** argv) {
     options.draw_body = !no_body;
     options.title = title;
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
-    hair::write_png(picture(file, extract_path, strands_path, colouring, options), output_path);
+    if (!labels_path.empty()) {
+      hair::write_png(style_label_picture(file, labels_path, model, options), output_path);
+    } else {
+      hair::write_png(picture(file, extract_path, strands_path, colouring, options), output_path);
+    }
   } catch (const hair::Error& e) {
     std::cerr << "hair-render: error: " << e.what() << "\n";
     return e.exit_code();

@@ -11,20 +11,20 @@
 #include <filesystem>
 #include <iostream>
 
+#include "hair/atomic_file.h"
 #include "hair/error.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/atomic_file.h"
 #include "hair/hair_style.h"
 #include "hair/style_classifier.h"
 #include "hair/style_cross_validation.h"
 #include "hair/style_cross_validation_markdown.h"
 #include "hair/style_features.h"
+#include "hair/style_io.h"
 #include "hair/style_labels.h"
 #include "hair/style_model_io.h"
-#include "hair/style_io.h"
 #include "hair/style_table.h"
 #include "hair/style_training.h"
 #include "hair/synth/synth_io.h"
@@ -51,15 +51,32 @@ std::vector<int8_t> truth_group_styles(const fs::path& truth_path, const hair::h
       hair::h5::read_enum_values(truth, "/patches/style"));
 }
 
-void add_model(Tables& tables, const fs::path& folder, const std::vector<fs::path>& truth_folders,
+/// Where the labels of the models come from.
+struct LabelSources {
+  std::vector<fs::path> truth_folders;              ///< <model>.truth.h5 of synthetic models
+  std::vector<hair::PatchStyleLabel> patch_labels;  ///< hand labels of real meshes
+};
+
+bool has_hand_labels(const LabelSources& sources, const std::string& model) {
+  return std::any_of(sources.patch_labels.begin(), sources.patch_labels.end(),
+                     [&](const hair::PatchStyleLabel& label) { return label.model == model; });
+}
+
+/// Adds the labelled clusters of the model in `folder` to both tables: labels from the
+/// model's truth file if there is one, else from the hand labels.
+void add_model(Tables& tables, const fs::path& folder, const LabelSources& sources,
                const hair::StyleFeatureParams& params) {
   std::string model = folder.filename().string();
   fs::path truth_path;
-  for (const fs::path& truth_folder : truth_folders)
+  for (const fs::path& truth_folder : sources.truth_folders)
     if (fs::exists(truth_folder / (model + ".truth.h5")))
       truth_path = truth_folder / (model + ".truth.h5");
-  if (truth_path.empty()) {
-    spdlog::warn("{}: no labels (no {}.truth.h5 in the --truth folders); left out", model, model);
+  bool real = truth_path.empty();
+  if (real && !has_hand_labels(sources, model)) {
+    spdlog::warn(
+        "{}: no labels (no {}.truth.h5 in the --truth folders, no rows in --labels); "
+        "left out",
+        model, model);
     return;
   }
   hair::h5::File extract = hair::h5::File::open_read_only((folder / "extract.h5").string());
@@ -123,10 +140,11 @@ void write_text(const fs::path& path, const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("Train and cross-validate the hairstyle classifiers of classify: the SVM with the "
-               "Pearson VII kernel and the random forest (paper section 5.1), on the paper's "
-               "features and on the 190 raw features of section 6.1.",
-               "hair-train-style");
+  CLI::App app(
+      "Train and cross-validate the hairstyle classifiers of classify: the SVM with the "
+      "Pearson VII kernel and the random forest (paper section 5.1), on the paper's "
+      "features and on the 190 raw features of section 6.1.",
+      "hair-train-style");
   std::vector<std::string> runs, truth, tables_in;
   std::string labels_path, tables_folder, report_path, models_folder;
   hair::StyleClassifierParams params;
@@ -136,8 +154,9 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   app.add_option("--truth", truth, "folder of synthetic truth files <model>.truth.h5")
       ->check(CLI::ExistingDirectory);
-  app.add_option("--labels", labels_path, "hand labels of real meshes per patch "
-                                          "(data/labels/makehuman_styles.tsv)")
+  app.add_option("--labels", labels_path,
+                 "hand labels of real meshes per patch "
+                 "(data/labels/makehuman_styles.tsv)")
       ->check(CLI::ExistingFile);
   app.add_option("--tables-in", tables_in,
                  "instead of --runs: the features_paper.tsv and features_raw.tsv of an earlier "
@@ -209,12 +228,14 @@ int main(int argc, char** argv) {
             hair::style_cross_validation(table->rows, int_labels(*table), real, params);
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - cv_start).count();
-        report += "\n## " + std::string(paper ? "The paper's features" : "Raw features") + " (" +
-                  std::to_string(table->rows.cols()) + " dimensions)\n\n" +
-                  hair::style_cross_validation_markdown(cv, "real meshes") + "\n" +
-                  fmt::format("Cross-validation of both classifiers, grid search included: {:.1f} s.\n", seconds);
+        report +=
+            "\n## " + std::string(paper ? "The paper's features" : "Raw features") + " (" +
+            std::to_string(table->rows.cols()) + " dimensions)\n\n" +
+            hair::style_cross_validation_markdown(cv, "real meshes") + "\n" +
+            fmt::format("Cross-validation of both classifiers, grid search included: {:.1f} s.\n",
+                        seconds);
         spdlog::info("{} features: SVM {:.1f}%, random forest {:.1f}%", paper ? "paper" : "raw",
-                     100 * cv.svm.accuracy, 100 * cv.forest.accuracy);
+                     100 * cv.svm.accuracy(), 100 * cv.forest.accuracy());
       }
       write_text(report_path, report);
     }

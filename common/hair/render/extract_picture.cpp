@@ -1,5 +1,6 @@
 #include "hair/render/extract_picture.h"
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 
 #include "hair/error.h"
@@ -7,6 +8,8 @@
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/h5/strand_set_io.h"
+#include "hair/render/style_picture.h"
+#include "hair/style_labels.h"
 #include "hair/typeify_io.h"
 
 namespace hair {
@@ -108,6 +111,36 @@ cv::Mat types_picture(const h5::File& types, const h5::File& extract,
       render_strands(strands, colours, h5::read_matrix<float, 3>(extract, "/body/vertices"),
                      h5::read_matrix<int32_t, 3>(extract, "/body/triangles"), options);
   draw_legend(image, group_type_members(), type_colours);
+  return image;
+}
+
+cv::Mat style_picture(const h5::File& extract, const std::vector<int8_t>& group_style,
+                      const RenderOptions& options) {
+  h5::require_schema(extract, kExtractSchema);
+  StrandSet strands = h5::read_strand_set(extract, "/strands");
+  const auto& strand_group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
+  // Indexed by style code; the last entry: no style.
+  static const std::vector<cv::Vec3b> style_colours = {
+      style_colour(0), style_colour(1), style_colour(2), style_colour(3), style_colour(-1)};
+  const auto none = static_cast<int32_t>(kStyleWords.size());
+  std::vector<int32_t> strand_style;
+  strand_style.reserve(strand_group.size());
+  for (int32_t group : strand_group) {
+    if (group < 0 || static_cast<size_t>(group) >= group_style.size())
+      throw Error::bad_input(extract.name(), "group " + std::to_string(group) + " has no style (" +
+                                                 std::to_string(group_style.size()) + " given)");
+    int8_t style = group_style[group];
+    strand_style.push_back(style >= 0 && style < none ? style : none);
+  }
+  cv::Mat image = render_strands(strands, colours_by_table(strands, strand_style, style_colours),
+                                 h5::read_matrix<float, 3>(extract, "/body/vertices"),
+                                 h5::read_matrix<int32_t, 3>(extract, "/body/triangles"), options);
+  h5::EnumMembers legend;
+  for (size_t code = 0; code < kStyleWords.size(); ++code)
+    legend.push_back({std::string(kStyleWords[code]), static_cast<int8_t>(code)});
+  if (std::count(strand_style.begin(), strand_style.end(), none) > 0)
+    legend.push_back({"no label", static_cast<int8_t>(none)});
+  draw_legend(image, legend, style_colours);
   return image;
 }
 

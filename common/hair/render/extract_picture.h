@@ -2,6 +2,7 @@
 
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "hair/h5/file.h"
 #include "hair/render/strand_render.h"
@@ -27,5 +28,13 @@ cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
 /// (types.h5 made from it), with a legend: root_free blue, root_connected green,
 /// middle orange, tip red.
 cv::Mat types_picture(const h5::File& types, const h5::File& extract, const RenderOptions& options);
+
+/// Renders the input strands of an extract.h5 file coloured by a style per group,
+/// with a legend: normal yellow, fixed brown, short green, braided blue (the paper's
+/// Fig. 9 and the synthetic gallery), grey for a group without a style.
+///
+/// @param group_style  #groups style codes (hair/style_labels.h), -1 for none
+cv::Mat style_picture(const h5::File& extract, const std::vector<int8_t>& group_style,
+                      const RenderOptions& options);
 
 }  // namespace hair

@@ -1,17 +1,16 @@
 #include "hair/render/synth_gallery.h"
 
+#include "hair/render/style_picture.h"
 #include "hair/triangle_mesh_distance.h"
 
 namespace hair {
 
 PointColours colours_by_style(const synth::SynthModel& model) {
   // BGR, indexed by synth::HairStyle.
-  static const std::vector<cv::Vec3b> colours = {
-      {60, 200, 240}, {40, 70, 140}, {80, 180, 60}, {220, 110, 40}};
   PointColours result;
   result.reserve(model.strand_point_style.size());
   for (synth::HairStyle style : model.strand_point_style)
-    result.push_back(colours[static_cast<size_t>(style)]);
+    result.push_back(style_colour(static_cast<int8_t>(style)));
   return result;
 }
 
