@@ -6,9 +6,10 @@ namespace hair {
 
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
                              StyleClassifierKind classifier) {
-  if (model.feature_names != paper_feature_names())
-    throw Error::usage("the style model was trained on the '" + model.feature_set +
-                       "' features, classify measures the paper's");
+  const Eigen::MatrixXd& rows = feature_set_rows(features, model.feature_set);
+  if (model.feature_names != feature_set_names(model.feature_set))
+    throw Error::usage("the style model's '" + model.feature_set +
+                       "' features are not the ones classify measures under that name");
   const auto cluster_count = static_cast<Eigen::Index>(features.strand_count.size());
   const auto class_count = static_cast<Eigen::Index>(model.class_labels.size());
   ClusterStyles result;
@@ -23,7 +24,7 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
   result.forest_vote_fraction = Eigen::MatrixXd::Zero(cluster_count, class_count);
   for (Eigen::Index c = 0; c < cluster_count; ++c) {
     if (features.strand_count[static_cast<size_t>(c)] == 0) continue;
-    Eigen::RowVectorXd row = features.paper_rows.row(c);
+    Eigen::RowVectorXd row = rows.row(c);
     StylePrediction prediction =
         style_prediction(model, std::span<const double>(row.data(), row.size()));
     auto i = static_cast<size_t>(c);

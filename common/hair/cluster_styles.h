@@ -23,10 +23,10 @@ struct ClusterStyles {
   Eigen::MatrixXd forest_vote_fraction;  ///< #clusters x k
 };
 
-/// Classifies every cluster that grown strands run through by its paper features
-/// (`features.paper_rows`, in paper_feature_names() order, which must be the model's);
-/// a cluster without strands gets no style (-1). `classifier` picks which classifier's
-/// class is `style`.
+/// Classifies every cluster that grown strands run through by its features of the
+/// model's feature set (feature_set_rows(); their names must be the model's); a cluster
+/// without strands gets no style (-1). `classifier` picks which classifier's class is
+/// `style`.
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
                              StyleClassifierKind classifier);
 

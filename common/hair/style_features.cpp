@@ -50,18 +50,16 @@ Eigen::MatrixXd centre_strand(const StrandSet& strands, int points_per,
   return centre;
 }
 
-/// Equation (6): d_M / max_j d_j, with d_j the mean distance of the strands' j-th points
-/// to the centre strand's; 1 when the strands all coincide (nothing gathers).
-double gathering_ratio(const StrandSet& profiles, int points_per) {
+/// d_j of equation (6) for every j: the mean distance of the strands' j-th points to the
+/// centre strand's (#points_per).
+Eigen::VectorXd spread_profile(const StrandSet& profiles, int points_per) {
   std::vector<int64_t> all(static_cast<size_t>(profiles.strand_count()));
   for (size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int64_t>(s);
   Eigen::MatrixXd centre = centre_strand(profiles, points_per, all);
   Eigen::VectorXd spread = Eigen::VectorXd::Zero(points_per);
   for (int64_t s = 0; s < profiles.strand_count(); ++s)
     spread += (profiles.strand(s).cast<double>() - centre).rowwise().norm();
-  spread /= static_cast<double>(std::max<int64_t>(1, profiles.strand_count()));
-  double largest = spread.maxCoeff();
-  return largest > 0 ? spread(points_per - 1) / largest : 1.0;
+  return spread / static_cast<double>(std::max<int64_t>(1, profiles.strand_count()));
 }
 
 /// Equation (7), in metres: max over nodes i and points j of |c_j^i - c_j^total|.
@@ -154,6 +152,7 @@ ClusterRuns sampled_runs(const ClusterRuns& cluster, int max_count) {
     auto i = static_cast<size_t>(s);
     sample.runs.append_strand(cluster.runs.strand(s));
     sample.starts_at_root.push_back(cluster.starts_at_root[i]);
+    sample.ends_at_tip.push_back(cluster.ends_at_tip[i]);
     sample.arrival.push_back(cluster.arrival[i]);
     sample.middle_node.push_back(cluster.middle_node[i]);
   }
@@ -175,6 +174,36 @@ Eigen::RowVectorXd paper_feature_row(const PaperFeatures& features) {
       features.max_scalp_distance_h, features.root_share,
       static_cast<double>(features.middle_node_count), features.twist_h;
   return row;
+}
+
+const std::vector<std::string>& extended_feature_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = paper_feature_names();
+    all.insert(all.end(), {"tip_share", "end_spread_h"});
+    return all;
+  }();
+  return names;
+}
+
+Eigen::RowVectorXd extended_feature_row(const PaperFeatures& features) {
+  Eigen::RowVectorXd row(9);
+  row << paper_feature_row(features), features.tip_share, features.end_spread_h;
+  return row;
+}
+
+const Eigen::MatrixXd& feature_set_rows(const StyleFeatures& features,
+                                        const std::string& feature_set) {
+  if (feature_set == "paper") return features.paper_rows;
+  if (feature_set == "extended") return features.extended_rows;
+  if (feature_set == "raw") return features.raw_rows;
+  throw Error::usage("unknown feature set '" + feature_set + "': paper, extended or raw");
+}
+
+std::vector<std::string> feature_set_names(const std::string& feature_set, int raw_points) {
+  if (feature_set == "paper") return paper_feature_names();
+  if (feature_set == "extended") return extended_feature_names();
+  if (feature_set == "raw") return raw_feature_names(raw_points);
+  throw Error::usage("unknown feature set '" + feature_set + "': paper, extended or raw");
 }
 
 int raw_feature_count(int raw_points) { return 11 * raw_points + 3; }
@@ -236,6 +265,7 @@ std::vector<ClusterRuns> cluster_runs(const StyleFeatureInput& input) {
         ClusterRuns& runs = clusters[static_cast<size_t>(cluster)];
         runs.runs.append_strand(strands.points.middleRows(start, stop - start));
         runs.starts_at_root.push_back(start == first ? 1 : 0);
+        runs.ends_at_tip.push_back(stop == end ? 1 : 0);
         runs.arrival.push_back(start == first ? Vec3(root_normal.row(s).cast<double>().transpose())
                                               : Vec3(point_of(strands.points, start) -
                                                      point_of(strands.points, start - 1)));
@@ -283,6 +313,7 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
   const auto cluster_count = static_cast<size_t>(input.cluster_count);
   result.paper.resize(cluster_count);
   result.paper_rows = Eigen::MatrixXd::Zero(input.cluster_count, 7);
+  result.extended_rows = Eigen::MatrixXd::Zero(input.cluster_count, 9);
   result.raw_rows =
       Eigen::MatrixXd::Zero(input.cluster_count, raw_feature_count(params.raw_points));
   result.strand_count.assign(cluster_count, 0);
@@ -306,6 +337,7 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
     result.point_count[c] = runs.point_count();
     if (runs.strand_count() == 0) {
       result.paper_rows.row(static_cast<Eigen::Index>(c)) = paper_feature_row(paper);
+      result.extended_rows.row(static_cast<Eigen::Index>(c)) = extended_feature_row(paper);
       continue;
     }
     double length_sum_m = 0, length_max_m = 0;
@@ -318,11 +350,17 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
     paper.max_length_h = length_max_m / h;
     double roots = 0;
     for (uint8_t at_root : cluster.starts_at_root) roots += at_root;
+    double tips = 0;
+    for (uint8_t at_tip : cluster.ends_at_tip) tips += at_tip;
+    paper.tip_share = tips / static_cast<double>(runs.strand_count());
     paper.root_share = roots / static_cast<double>(runs.strand_count());
 
     ClusterRuns sample = sampled_runs(cluster, params.max_sampled_strands);
     StrandSet profiles = resample_by_count(sample.runs, params.profile_points);
-    paper.gathering_ratio = gathering_ratio(profiles, params.profile_points);
+    Eigen::VectorXd spread = spread_profile(profiles, params.profile_points);
+    paper.gathering_ratio =
+        spread.maxCoeff() > 0 ? spread(params.profile_points - 1) / spread.maxCoeff() : 1.0;
+    paper.end_spread_h = spread(params.profile_points - 1) / h;
     paper.twist_h = twist_m(profiles, params.profile_points, sample.middle_node) / h;
     std::vector<double> scalp_distance_m(static_cast<size_t>(profiles.point_count()));
 #pragma omp parallel for schedule(dynamic, 256)
@@ -331,13 +369,14 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
     paper.max_scalp_distance_h =
         *std::max_element(scalp_distance_m.begin(), scalp_distance_m.end()) / h;
     result.paper_rows.row(static_cast<Eigen::Index>(c)) = paper_feature_row(paper);
+    result.extended_rows.row(static_cast<Eigen::Index>(c)) = extended_feature_row(paper);
 
     StrandSet particles = resample_by_count(sample.runs, params.raw_points);
     Eigen::RowVectorXd raw = raw_feature_row(sample, particles, params.raw_points, skin);
     raw(6) = static_cast<double>(runs.strand_count());  // strand_count: all of them
     result.raw_rows.row(static_cast<Eigen::Index>(c)) = raw;
   }
-  if (!result.paper_rows.allFinite() || !result.raw_rows.allFinite())
+  if (!result.extended_rows.allFinite() || !result.raw_rows.allFinite())
     throw Error::runtime(input.source, "a style feature is not finite");
   return result;
 }

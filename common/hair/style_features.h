@@ -55,12 +55,26 @@ struct PaperFeatures {
   /// braided: equation (7), max_ij |c_j^i - c_j^total| over the centre strands c^i of
   /// the middle nodes and c^total of all of them; 0 with fewer than two nodes.
   double twist_h = 0;
+
+  // Ours, beyond the paper (the "extended" feature set): what tells a cap gathered by a
+  // band, the first piece of long hair lying on the scalp, and short hair lying on the
+  // head apart, which the paper's features above do not once clusters are split where
+  // the group type changes (section 4.3).
+  /// Share of the cluster's strands that end at a strand's tip (short hair ends in its
+  /// cluster; a cap or the first piece of long hair goes on into another).
+  double tip_share = 0;
+  /// d_M of equation (6) in H: how far apart the strands end (a band gathers them).
+  double end_spread_h = 0;
 };
 
 /// Names of the paper features, in the order of paper_feature_row().
 const std::vector<std::string>& paper_feature_names();
 /// The paper features as a row (the order of paper_feature_names()).
 Eigen::RowVectorXd paper_feature_row(const PaperFeatures& features);
+/// Names of the extended features: the paper's, then tip_share and end_spread_h.
+const std::vector<std::string>& extended_feature_names();
+/// The extended features as a row (the order of extended_feature_names()).
+Eigen::RowVectorXd extended_feature_row(const PaperFeatures& features);
 
 /// 11 * raw_points + 3: 190 for the default 17 particles.
 int raw_feature_count(int raw_points);
@@ -72,6 +86,7 @@ std::vector<std::string> raw_feature_names(int raw_points);
 struct ClusterRuns {
   StrandSet runs;                        ///< root side first
   std::vector<uint8_t> starts_at_root;   ///< per run: it starts at a strand's root
+  std::vector<uint8_t> ends_at_tip;      ///< per run: it ends at a strand's tip
   std::vector<Eigen::Vector3d> arrival;  ///< per run: the direction the strand comes
                                          ///< in with (the root's normal at a root)
   std::vector<int32_t> middle_node;      ///< per run: the middle cluster most of its
@@ -85,11 +100,18 @@ std::vector<ClusterRuns> cluster_runs(const StyleFeatureInput& input);
 struct StyleFeatures {
   std::vector<PaperFeatures> paper;   ///< per cluster
   Eigen::MatrixXd paper_rows;         ///< #clusters x paper_feature_names().size()
+  Eigen::MatrixXd extended_rows;      ///< #clusters x extended_feature_names().size()
   Eigen::MatrixXd raw_rows;           ///< #clusters x raw_feature_count(raw_points)
   std::vector<int64_t> strand_count;  ///< per cluster: runs (0: nothing grew in it; its
                                       ///< features are all 0 and it is not classified)
   std::vector<int64_t> point_count;   ///< per cluster: grown points in it
 };
+
+/// The rows of `features` of the named feature set ("paper", "extended" or "raw"), and
+/// their names; throws hair::Error (usage) for another name.
+const Eigen::MatrixXd& feature_set_rows(const StyleFeatures& features,
+                                        const std::string& feature_set);
+std::vector<std::string> feature_set_names(const std::string& feature_set, int raw_points = 17);
 
 /// The paper's features (section 5.1) and the raw features (section 6.1) of every
 /// cluster of the grown strands. Deterministic whatever the thread count; every value

@@ -84,11 +84,12 @@ void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleF
                                            RowMajorD(styles.forest_vote_fraction));
   std::vector<int8_t> classes(styles.classes.begin(), styles.classes.end());
   h5::write_enum_dataset(file, "/classes/style", classes, style_members());
-  const std::vector<std::string>& names = paper_feature_names();
+  const std::vector<std::string>& names = extended_feature_names();
   for (size_t f = 0; f < names.size(); ++f) {
-    std::vector<double> column(static_cast<size_t>(features.paper_rows.rows()));
+    std::vector<double> column(static_cast<size_t>(features.extended_rows.rows()));
     for (size_t c = 0; c < column.size(); ++c)
-      column[c] = features.paper_rows(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(f));
+      column[c] =
+          features.extended_rows(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(f));
     h5::write_vector(file, "/features/" + names[f], column);
   }
 }

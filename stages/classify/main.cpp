@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
                    {"random_forest", "svm"});
 
   return app.run(argc, argv, [&] {
-    hair::StyleModel model = hair::read_style_model(model_path, hair::paper_feature_names());
+    hair::StyleModel model = hair::read_style_model(model_path, {});
     hair::StyleFeatureInput input = hair::read_style_feature_input(
         hair::h5::File::open_read_only(extract_path), hair::h5::File::open_read_only(clusters_path),
         hair::h5::File::open_read_only(strands_path));

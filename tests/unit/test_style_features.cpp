@@ -69,10 +69,12 @@ TEST(ClusterRuns, SplitsStrandsWhereTheirClusterChanges) {
   ASSERT_EQ(runs[0].runs.strand_count(), 1);
   EXPECT_EQ(runs[0].runs.strand_size(0), 3);
   EXPECT_EQ(runs[0].starts_at_root[0], 1);
+  EXPECT_EQ(runs[0].ends_at_tip[0], 0);
   EXPECT_EQ(runs[0].middle_node[0], -1);
   EXPECT_TRUE(runs[0].arrival[0].isApprox(Eigen::Vector3d(0, 1, 0)));
   ASSERT_EQ(runs[1].runs.strand_count(), 1);
   EXPECT_EQ(runs[1].starts_at_root[0], 0);
+  EXPECT_EQ(runs[1].ends_at_tip[0], 0);  // the strand's last point is cluster 2's
   EXPECT_TRUE(runs[1].arrival[0].isApprox(Eigen::Vector3d(1, 0, 0)));  // from {0,2,0}
   EXPECT_EQ(runs[1].middle_node[0], 4);
   EXPECT_EQ(runs[2].runs.strand_count(), 0);
@@ -91,6 +93,7 @@ TEST(StyleFeatures, LengthsAndScalpDistanceOfStraightStrands) {
   EXPECT_NEAR(paper.max_length_h, 0.8, 1e-6);
   EXPECT_NEAR(paper.max_scalp_distance_h, 0.8, 1e-6);  // the tip of the longest
   EXPECT_DOUBLE_EQ(paper.root_share, 1.0);
+  EXPECT_DOUBLE_EQ(paper.tip_share, 1.0);
   EXPECT_EQ(paper.middle_node_count, 0);
   EXPECT_DOUBLE_EQ(paper.twist_h, 0.0);
   EXPECT_EQ(features.strand_count[0], 4);
@@ -110,6 +113,13 @@ TEST(StyleFeatures, GatheringRatioIsZeroForStrandsMeetingAtTheEndAndOneForParall
   StyleFeatures features = style_features(input, {});
   EXPECT_NEAR(features.paper[0].gathering_ratio, 0.0, 1e-6);
   EXPECT_NEAR(features.paper[1].gathering_ratio, 1.0, 1e-6);
+  // The ends: together at the band; 0.2, 0.1, 0, 0.1, 0.2 m from the centre for the
+  // parallel strands, 0.12 m on average, with H = 0.25: 0.48 H.
+  EXPECT_NEAR(features.paper[0].end_spread_h, 0.0, 1e-6);
+  EXPECT_NEAR(features.paper[1].end_spread_h, 0.48, 1e-6);
+  EXPECT_EQ(features.extended_rows.row(1).tail(2),
+            Eigen::RowVector2d(1.0, features.paper[1].end_spread_h));
+  EXPECT_EQ(features.extended_rows.row(1).head(7), features.paper_rows.row(1));
 }
 
 TEST(StyleFeatures, TwistIsTheLargestDistanceOfANodeCentreFromTheCentreOfAllNodes) {

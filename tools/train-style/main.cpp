@@ -13,6 +13,7 @@
 
 #include "hair/atomic_file.h"
 #include "hair/error.h"
+#include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
@@ -33,10 +34,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The two feature tables of every labelled cluster of the models under the run folders.
-struct Tables {
-  hair::StyleTable paper, raw;
-};
+/// The feature sets, in the order of the report: the paper's (section 5.1), ours (the
+/// paper's and two more), the raw features (section 6.1).
+const std::vector<std::string> kFeatureSets = {"paper", "extended", "raw"};
+
+/// The feature tables of every labelled cluster of the models under the run folders, one
+/// per feature set, with the same rows.
+using Tables = std::map<std::string, hair::StyleTable>;
 
 /// Per group of a synthetic model, its true style (truth file beside the mesh).
 std::vector<int8_t> truth_group_styles(const fs::path& truth_path, const hair::h5::File& extract,
@@ -49,6 +53,21 @@ std::vector<int8_t> truth_group_styles(const fs::path& truth_path, const hair::h
       hair::h5::read_vector<int32_t>(extract, "/mesh/face_group"), group_count,
       hair::h5::read_vector<int64_t>(truth, "/patches/first_vertex"),
       hair::h5::read_enum_values(truth, "/patches/style"));
+}
+
+/// The truth file hair-synth wrote beside the hair mesh extract.h5 was made from (its
+/// provenance names the mesh), or an empty path if there is none.
+fs::path truth_beside_mesh(const hair::h5::File& extract) {
+  if (!hair::h5::has_attribute(extract, "/", "inputs")) return {};
+  nlohmann::json inputs = nlohmann::json::parse(
+      hair::h5::read_string_attribute(extract, "/", "inputs"), nullptr, false);
+  if (!inputs.is_array()) return {};
+  for (const auto& input : inputs)
+    if (input.value("role", "") == "hair_mesh") {
+      fs::path truth = fs::path(input.value("path", "")).replace_extension(".truth.h5");
+      if (fs::exists(truth)) return truth;
+    }
+  return {};
 }
 
 /// Where the labels of the models come from.
@@ -67,9 +86,10 @@ bool has_hand_labels(const LabelSources& sources, const std::string& model) {
 void add_model(Tables& tables, const fs::path& folder, const LabelSources& sources,
                const hair::StyleFeatureParams& params) {
   std::string model = folder.filename().string();
-  fs::path truth_path;
+  hair::h5::File extract = hair::h5::File::open_read_only((folder / "extract.h5").string());
+  fs::path truth_path = truth_beside_mesh(extract);
   for (const fs::path& truth_folder : sources.truth_folders)
-    if (fs::exists(truth_folder / (model + ".truth.h5")))
+    if (truth_path.empty() && fs::exists(truth_folder / (model + ".truth.h5")))
       truth_path = truth_folder / (model + ".truth.h5");
   bool real = truth_path.empty();
   if (real && !has_hand_labels(sources, model)) {
@@ -79,7 +99,6 @@ void add_model(Tables& tables, const fs::path& folder, const LabelSources& sourc
         model, model);
     return;
   }
-  hair::h5::File extract = hair::h5::File::open_read_only((folder / "extract.h5").string());
   hair::h5::File clusters = hair::h5::File::open_read_only((folder / "clusters.h5").string());
   hair::h5::File strands = hair::h5::File::open_read_only((folder / "strands.h5").string());
   hair::StyleFeatureInput input = hair::read_style_feature_input(extract, clusters, strands);
@@ -99,8 +118,9 @@ void add_model(Tables& tables, const fs::path& folder, const LabelSources& sourc
   for (int32_t c = 0; c < input.cluster_count; ++c) {
     auto i = static_cast<size_t>(c);
     if (label[i] < 0 || features.strand_count[i] == 0) continue;
-    tables.paper.append(features.paper_rows.row(c), label[i], model, c, real, purity[i]);
-    tables.raw.append(features.raw_rows.row(c), label[i], model, c, real, purity[i]);
+    for (const std::string& set : kFeatureSets)
+      tables[set].append(hair::feature_set_rows(features, set).row(c), label[i], model, c, real,
+                         purity[i]);
   }
 }
 
@@ -145,29 +165,30 @@ int main(int argc, char** argv) {
       "Pearson VII kernel and the random forest (paper section 5.1), on the paper's "
       "features and on the 190 raw features of section 6.1.",
       "hair-train-style");
-  std::vector<std::string> runs, truth, tables_in;
-  std::string labels_path, tables_folder, report_path, models_folder;
+  std::vector<std::string> runs, truth;
+  std::string labels_path, tables_in, tables_folder, report_path, models_folder;
   hair::StyleClassifierParams params;
   app.add_option("--runs", runs,
                  "pipeline output folder (OUT of Makefile.pipeline): every subfolder with "
                  "extract.h5, clusters.h5 and strands.h5 is a model")
       ->check(CLI::ExistingDirectory);
-  app.add_option("--truth", truth, "folder of synthetic truth files <model>.truth.h5")
+  app.add_option("--truth", truth,
+                 "folder of synthetic truth files <model>.truth.h5, for models whose extract.h5 "
+                 "does not name a mesh with its truth beside it (hair-synth writes it there)")
       ->check(CLI::ExistingDirectory);
   app.add_option("--labels", labels_path,
                  "hand labels of real meshes per patch "
                  "(data/labels/makehuman_styles.tsv)")
       ->check(CLI::ExistingFile);
   app.add_option("--tables-in", tables_in,
-                 "instead of --runs: the features_paper.tsv and features_raw.tsv of an earlier "
-                 "--tables")
-      ->expected(2)
-      ->check(CLI::ExistingFile);
+                 "instead of --runs: the folder of an earlier --tables (features_paper.tsv, "
+                 "features_extended.tsv, features_raw.tsv)")
+      ->check(CLI::ExistingDirectory);
   app.add_option("--tables", tables_folder, "write the feature tables (TSV and ARFF) here");
   app.add_option("--report", report_path, "write the cross-validation report (Markdown) here");
   app.add_option("--models", models_folder,
-                 "write the model trained on all rows with the paper's features here "
-                 "(style_paper.yml)");
+                 "write the models trained on all rows here: style_paper.yml (the paper's "
+                 "features) and style_extended.yml (ours)");
   app.add_option("--folds", params.folds, "folds of the cross-validation")
       ->check(CLI::Range(2, 100));
   app.add_option("--seed", params.seed, "seed of the fold assignment");
@@ -186,11 +207,12 @@ int main(int argc, char** argv) {
     hair::StyleFeatureParams feature_params;
     Tables tables;
     if (!tables_in.empty()) {
-      tables.paper = hair::read_style_table_tsv(tables_in[0]);
-      tables.raw = hair::read_style_table_tsv(tables_in[1]);
+      for (const std::string& set : kFeatureSets)
+        tables[set] =
+            hair::read_style_table_tsv(fs::path(tables_in) / ("features_" + set + ".tsv"));
     } else {
-      tables.paper.feature_names = hair::paper_feature_names();
-      tables.raw.feature_names = hair::raw_feature_names(feature_params.raw_points);
+      for (const std::string& set : kFeatureSets)
+        tables[set].feature_names = hair::feature_set_names(set, feature_params.raw_points);
       LabelSources sources;
       sources.truth_folders.assign(truth.begin(), truth.end());
       if (!labels_path.empty()) sources.patch_labels = hair::read_patch_style_labels(labels_path);
@@ -203,48 +225,57 @@ int main(int argc, char** argv) {
         for (const fs::path& folder : models) add_model(tables, folder, sources, feature_params);
       }
     }
-    spdlog::info("{} labelled clusters", tables.paper.row_count());
-    if (tables.paper.row_count() < params.folds)
-      throw hair::Error::usage("only " + std::to_string(tables.paper.row_count()) +
+    const hair::StyleTable& first = tables.at("paper");
+    spdlog::info("{} labelled clusters", first.row_count());
+    if (first.row_count() < params.folds)
+      throw hair::Error::usage("only " + std::to_string(first.row_count()) +
                                " labelled clusters, fewer than the " +
                                std::to_string(params.folds) + " folds");
     if (!tables_folder.empty()) {
       fs::path folder(tables_folder);
       fs::create_directories(folder);
-      hair::write_style_table_tsv(folder / "features_paper.tsv", tables.paper);
-      hair::write_style_table_tsv(folder / "features_raw.tsv", tables.raw);
-      hair::write_style_table_arff(folder / "features_paper.arff", tables.paper,
-                                   "hairstyle_paper_features");
-      hair::write_style_table_arff(folder / "features_raw.arff", tables.raw,
-                                   "hairstyle_raw_features");
+      for (const std::string& set : kFeatureSets) {
+        hair::write_style_table_tsv(folder / ("features_" + set + ".tsv"), tables.at(set));
+        hair::write_style_table_arff(folder / ("features_" + set + ".arff"), tables.at(set),
+                                     "hairstyle_" + set + "_features");
+      }
     }
     if (!report_path.empty()) {
-      std::vector<bool> real(tables.paper.real_mesh.begin(), tables.paper.real_mesh.end());
-      std::string report = "## Data\n\n" + data_summary(tables.paper);
-      for (const auto* table : {&tables.paper, &tables.raw}) {
-        bool paper = table == &tables.paper;
+      std::vector<bool> real(first.real_mesh.begin(), first.real_mesh.end());
+      std::string report = "## Data\n\n" + data_summary(first);
+      const std::map<std::string, std::string> titles = {
+          {"paper", "The paper's features"},
+          {"extended", "Extended features (the paper's, tip_share and end_spread_h)"},
+          {"raw", "Raw features"}};
+      for (const std::string& set : kFeatureSets) {
+        const hair::StyleTable& table = tables.at(set);
         auto cv_start = std::chrono::steady_clock::now();
         hair::StyleCrossValidation cv =
-            hair::style_cross_validation(table->rows, int_labels(*table), real, params);
+            hair::style_cross_validation(table.rows, int_labels(table), real, params);
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - cv_start).count();
         report +=
-            "\n## " + std::string(paper ? "The paper's features" : "Raw features") + " (" +
-            std::to_string(table->rows.cols()) + " dimensions)\n\n" +
-            hair::style_cross_validation_markdown(cv, "real meshes") + "\n" +
+            "\n## " + titles.at(set) + " (" + std::to_string(table.rows.cols()) +
+            " dimensions)\n\n" + hair::style_cross_validation_markdown(cv, "real meshes") + "\n" +
             fmt::format("Cross-validation of both classifiers, grid search included: {:.1f} s.\n",
                         seconds);
-        spdlog::info("{} features: SVM {:.1f}%, random forest {:.1f}%", paper ? "paper" : "raw",
-                     100 * cv.svm.accuracy(), 100 * cv.forest.accuracy());
+        spdlog::info(
+            "{} features: SVM {:.1f}%, random forest {:.1f}% (real meshes {:.1f}%, {:.1f}%)", set,
+            100 * cv.svm.accuracy(), 100 * cv.forest.accuracy(), 100 * cv.svm.subset_accuracy(),
+            100 * cv.forest.subset_accuracy());
       }
       write_text(report_path, report);
     }
     if (!models_folder.empty()) {
       fs::create_directories(models_folder);
-      hair::StyleModel model = hair::trained_style_model(
-          tables.paper.rows, int_labels(tables.paper), "paper", tables.paper.feature_names, params);
-      hair::write_style_model(fs::path(models_folder) / "style_paper.yml", model);
-      spdlog::info("wrote {}", (fs::path(models_folder) / "style_paper.yml").string());
+      for (const char* set : {"paper", "extended"}) {
+        const hair::StyleTable& table = tables.at(set);
+        hair::StyleModel model = hair::trained_style_model(table.rows, int_labels(table), set,
+                                                           table.feature_names, params);
+        fs::path path = fs::path(models_folder) / ("style_" + std::string(set) + ".yml");
+        hair::write_style_model(path, model);
+        spdlog::info("wrote {}", path.string());
+      }
     }
     spdlog::info("done in {:.1f} s",
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
