@@ -39,6 +39,21 @@ std::vector<int32_t> stratified_folds(std::span<const int32_t> labels, int folds
   return fold;
 }
 
+std::vector<int32_t> grouped_folds(const std::vector<std::string>& group_of_row, int folds,
+                                   uint64_t seed) {
+  std::vector<std::string> groups = group_of_row;
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  std::vector<int32_t> one_class(groups.size(), 0);
+  std::vector<int32_t> group_fold = stratified_folds(one_class, folds, seed);
+  std::vector<int32_t> fold_of_row;
+  fold_of_row.reserve(group_of_row.size());
+  for (const std::string& group : group_of_row)
+    fold_of_row.push_back(group_fold[static_cast<size_t>(
+        std::lower_bound(groups.begin(), groups.end(), group) - groups.begin())]);
+  return fold_of_row;
+}
+
 std::vector<Eigen::Index> fold_row_indices(std::span<const int32_t> fold_of_row, int32_t fold,
                                            bool in_fold) {
   std::vector<Eigen::Index> rows;

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace hair {
@@ -23,6 +24,19 @@ namespace hair {
 ///
 /// Throws hair::Error (usage) for folds outside [2, n].
 std::vector<int32_t> stratified_folds(std::span<const int32_t> labels, int folds, uint64_t seed);
+
+/// The fold of every row for a k-fold cross-validation that keeps the rows of a group
+/// together (e.g. the clusters of one hair model): the distinct groups are dealt to the
+/// folds as stratified_folds() deals the rows of one class, so every fold holds as many
+/// groups as the others, give or take one.
+///
+///   @param[in] group_of_row  n group names
+///   @param[in] folds  2 <= folds <= the number of distinct groups
+///   @return n fold numbers in [0, folds)
+///
+/// Throws hair::Error (usage) for folds outside [2, #groups].
+std::vector<int32_t> grouped_folds(const std::vector<std::string>& group_of_row, int folds,
+                                   uint64_t seed);
 
 /// The rows (indices into `fold_of_row`, ascending) whose fold is `fold` when `in_fold`,
 /// the others otherwise: a fold's test rows, or its training rows.

@@ -14,7 +14,8 @@ namespace hair {
 StyleCrossValidation style_cross_validation(const Eigen::MatrixXd& features,
                                             std::span<const int32_t> labels,
                                             const std::vector<bool>& subset,
-                                            const StyleClassifierParams& params) {
+                                            const StyleClassifierParams& params,
+                                            std::span<const int32_t> fold_of_row) {
   params.check();
   if (static_cast<size_t>(features.rows()) != labels.size() ||
       (!subset.empty() && subset.size() != labels.size()))
@@ -29,7 +30,18 @@ StyleCrossValidation style_cross_validation(const Eigen::MatrixXd& features,
   std::sort(result.class_labels.begin(), result.class_labels.end());
   result.class_labels.erase(std::unique(result.class_labels.begin(), result.class_labels.end()),
                             result.class_labels.end());
-  result.fold = stratified_folds(labels, params.folds, params.seed);
+  if (fold_of_row.empty()) {
+    result.fold = stratified_folds(labels, params.folds, params.seed);
+  } else {
+    if (fold_of_row.size() != labels.size())
+      throw Error::usage("style cross-validation: " + std::to_string(fold_of_row.size()) +
+                         " folds for " + std::to_string(labels.size()) + " rows");
+    for (int32_t fold : fold_of_row)
+      if (fold < 0 || fold >= params.folds)
+        throw Error::usage("style cross-validation: fold " + std::to_string(fold) + " outside 0.." +
+                           std::to_string(params.folds - 1));
+    result.fold.assign(fold_of_row.begin(), fold_of_row.end());
+  }
   result.svm_predicted.assign(labels.size(), 0);
   result.forest_predicted.assign(labels.size(), 0);
 

@@ -47,9 +47,13 @@ struct StyleCrossValidation {
 /// Deterministic: the same inputs and settings give the same result, whatever the thread
 /// count. Throws hair::Error: bad input for a non-finite feature (naming row and
 /// column); usage for bad settings, fewer rows than folds, or lengths that differ.
+///   @param[in] fold_of_row  n folds in [0, params.folds), or empty: the stratified folds
+///       of stratified_folds(labels, params.folds, params.seed). Given folds keep rows
+///       together, e.g. the clusters of one model (grouped_folds).
 StyleCrossValidation style_cross_validation(const Eigen::MatrixXd& features,
                                             std::span<const int32_t> labels,
                                             const std::vector<bool>& subset,
-                                            const StyleClassifierParams& params);
+                                            const StyleClassifierParams& params,
+                                            std::span<const int32_t> fold_of_row = {});
 
 }  // namespace hair

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "hair/error.h"
@@ -66,6 +67,28 @@ TEST(StratifiedFolds, RejectsFoldCountsOutsideTheRows) {
   EXPECT_THROW(stratified_folds(labels, 1, 1), Error);
   EXPECT_THROW(stratified_folds(labels, 4, 1), Error);
   EXPECT_NO_THROW(stratified_folds(labels, 3, 1));
+}
+
+TEST(GroupedFolds, KeepEveryGroupInOneFoldAndBalanceTheGroups) {
+  // 23 models with 1 to 5 clusters each, rows interleaved.
+  std::vector<std::string> group;
+  for (int row = 0; row < 70; ++row) group.push_back("model_" + std::to_string((row * 7) % 23));
+  std::vector<int32_t> fold = grouped_folds(group, 5, 3);
+  ASSERT_EQ(fold.size(), group.size());
+  std::map<std::string, std::set<int32_t>> folds_of_group;
+  for (size_t row = 0; row < group.size(); ++row) folds_of_group[group[row]].insert(fold[row]);
+  std::map<int32_t, int> groups_per_fold;
+  for (const auto& [name, folds] : folds_of_group) {
+    EXPECT_EQ(folds.size(), 1u) << name;
+    ++groups_per_fold[*folds.begin()];
+  }
+  ASSERT_EQ(groups_per_fold.size(), 5u);
+  for (const auto& [f, count] : groups_per_fold) {
+    EXPECT_GE(count, 4) << "fold " << f;  // 23 groups in 5 folds: 4 or 5 each
+    EXPECT_LE(count, 5) << "fold " << f;
+  }
+  EXPECT_EQ(grouped_folds(group, 5, 3), fold);
+  EXPECT_THROW(grouped_folds({"a", "a", "b"}, 3, 1), Error);  // 2 groups for 3 folds
 }
 
 }  // namespace

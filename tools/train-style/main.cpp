@@ -19,6 +19,7 @@
 #include "hair/h5/file.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/hair_style.h"
+#include "hair/stratified_folds.h"
 #include "hair/style_classifier.h"
 #include "hair/style_cross_validation.h"
 #include "hair/style_cross_validation_markdown.h"
@@ -119,8 +120,8 @@ void add_model(Tables& tables, const fs::path& folder, const LabelSources& sourc
     auto i = static_cast<size_t>(c);
     if (label[i] < 0 || features.strand_count[i] == 0) continue;
     for (const std::string& set : kFeatureSets)
-      tables[set].append(hair::feature_set_rows(features, set).row(c), label[i], model, c, real,
-                         purity[i]);
+      tables[set].append(hair::feature_set_rows(features, set).row(c), label[i], folder.string(), c,
+                         real, purity[i]);
   }
 }
 
@@ -192,6 +193,12 @@ int main(int argc, char** argv) {
   app.add_option("--folds", params.folds, "folds of the cross-validation")
       ->check(CLI::Range(2, 100));
   app.add_option("--seed", params.seed, "seed of the fold assignment");
+  std::string fold_by = "cluster";
+  app.add_option("--fold-by", fold_by,
+                 "cluster: stratified folds of clusters (the paper's cross-validation); model: "
+                 "the clusters of a model stay in one fold, so every model, the real meshes "
+                 "among them, is classified by classifiers trained without it")
+      ->check(CLI::IsMember({"cluster", "model"}));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -242,7 +249,12 @@ int main(int argc, char** argv) {
     }
     if (!report_path.empty()) {
       std::vector<bool> real(first.real_mesh.begin(), first.real_mesh.end());
-      std::string report = "## Data\n\n" + data_summary(first);
+      std::vector<int32_t> folds;
+      if (fold_by == "model") folds = hair::grouped_folds(first.model, params.folds, params.seed);
+      std::string report = "## Data\n\n" + data_summary(first) + "\nFolds: " +
+                           (fold_by == "model" ? "by model (a model's clusters in one fold)"
+                                               : "stratified by style, cluster by cluster") +
+                           ".\n";
       const std::map<std::string, std::string> titles = {
           {"paper", "The paper's features"},
           {"extended", "Extended features (the paper's, tip_share and end_spread_h)"},
@@ -251,7 +263,7 @@ int main(int argc, char** argv) {
         const hair::StyleTable& table = tables.at(set);
         auto cv_start = std::chrono::steady_clock::now();
         hair::StyleCrossValidation cv =
-            hair::style_cross_validation(table.rows, int_labels(table), real, params);
+            hair::style_cross_validation(table.rows, int_labels(table), real, params, folds);
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - cv_start).count();
         report +=
