@@ -371,10 +371,12 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
     result.paper_rows.row(static_cast<Eigen::Index>(c)) = paper_feature_row(paper);
     result.extended_rows.row(static_cast<Eigen::Index>(c)) = extended_feature_row(paper);
 
-    StrandSet particles = resample_by_count(sample.runs, params.raw_points);
-    Eigen::RowVectorXd raw = raw_feature_row(sample, particles, params.raw_points, skin);
-    raw(6) = static_cast<double>(runs.strand_count());  // strand_count: all of them
-    result.raw_rows.row(static_cast<Eigen::Index>(c)) = raw;
+    if (params.raw_features) {
+      StrandSet particles = resample_by_count(sample.runs, params.raw_points);
+      Eigen::RowVectorXd raw = raw_feature_row(sample, particles, params.raw_points, skin);
+      raw(6) = static_cast<double>(runs.strand_count());  // strand_count: all of them
+      result.raw_rows.row(static_cast<Eigen::Index>(c)) = raw;
+    }
   }
   if (!result.extended_rows.allFinite() || !result.raw_rows.allFinite())
     throw Error::runtime(input.source, "a style feature is not finite");

@@ -40,6 +40,10 @@ struct StyleFeatureParams {
   /// means, or a maximum whose tip strands are many; the distance queries dominate the
   /// time otherwise). 0: every strand.
   int max_sampled_strands = 1000;
+  /// Whether to measure the raw features (training and evaluation want them; classify
+  /// does not, and their distances to the skin are a third of its time). Without them
+  /// StyleFeatures::raw_rows is all 0.
+  bool raw_features = true;
 };
 
 /// The paper's features of one cluster (section 5.1). Lengths are in head heights H.

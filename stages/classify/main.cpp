@@ -35,7 +35,10 @@ int main(int argc, char** argv) {
     hair::StyleFeatureInput input = hair::read_style_feature_input(
         hair::h5::File::open_read_only(extract_path), hair::h5::File::open_read_only(clusters_path),
         hair::h5::File::open_read_only(strands_path));
-    hair::StyleFeatures features = hair::style_features(input, {});
+    hair::StyleFeatureParams feature_params;
+    feature_params.raw_features = model.feature_set == "raw";  // slow; the default models
+                                                               // take the paper's or ours
+    hair::StyleFeatures features = hair::style_features(input, feature_params);
     hair::ClusterStyles styles =
         hair::cluster_styles(features, model, *hair::style_classifier_from_name(classifier));
     int classified = 0;
