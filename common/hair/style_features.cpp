@@ -62,23 +62,73 @@ Eigen::VectorXd spread_profile(const StrandSet& profiles, int points_per) {
   return spread / static_cast<double>(std::max<int64_t>(1, profiles.strand_count()));
 }
 
-/// Equation (7), in metres: max over nodes i and points j of |c_j^i - c_j^total|.
-double twist_m(const StrandSet& profiles, int points_per, const std::vector<int32_t>& node) {
-  std::map<int32_t, std::vector<int64_t>> members;
-  std::vector<int64_t> all;
-  for (size_t s = 0; s < node.size(); ++s)
-    if (node[s] >= 0) {
-      members[node[s]].push_back(static_cast<int64_t>(s));
-      all.push_back(static_cast<int64_t>(s));
+/// Equation (7), in metres: max over nodes i and positions j of |c_j^i - c_j^total|.
+///
+/// Nodes are middle clusters; a grown strand follows one node's groups for a while, then
+/// maybe another's, so the nodes' centre strands are not whole strands to resample and
+/// average point by point. c^total is the mean of the runs that follow middle nodes,
+/// taken at equal arc lengths (`step_m`) from each run's start while at least half of
+/// those runs are that long; c_j^i is the mean of the points following node i whose
+/// nearest point of c^total is c_j^total (at least 5 of them). With fewer than two nodes
+/// so measured, 0.
+double twist_m(const ClusterRuns& cluster, double step_m) {
+  const StrandSet& runs = cluster.runs;
+  std::vector<int64_t> members;
+  for (int64_t s = 0; s < runs.strand_count(); ++s)
+    for (int64_t row = runs.offsets[s]; row < runs.offsets[s + 1]; ++row)
+      if (cluster.point_middle_node[static_cast<size_t>(row)] >= 0) {
+        members.push_back(s);
+        break;
+      }
+  if (members.empty()) return 0;
+  // c^total: the members' points at arc lengths 0, step, 2 step, ... from their starts.
+  std::vector<Vec3> sum;
+  std::vector<int64_t> count;
+  for (int64_t s : members) {
+    size_t k = 0;
+    double along_m = 0, next_m = 0;
+    for (int64_t row = runs.offsets[s]; row + 1 < runs.offsets[s + 1]; ++row) {
+      Vec3 a = point_of(runs.points, row), b = point_of(runs.points, row + 1);
+      double length_m = (b - a).norm();
+      while (next_m <= along_m + length_m) {
+        double t = length_m > 0 ? (next_m - along_m) / length_m : 0;
+        if (k == sum.size()) sum.push_back(Vec3::Zero()), count.push_back(0);
+        sum[k] += a + t * (b - a);
+        ++count[k];
+        ++k;
+        next_m += step_m;
+      }
+      along_m += length_m;
     }
-  if (members.size() < 2) return 0;
-  Eigen::MatrixXd total = centre_strand(profiles, points_per, all);
+  }
+  std::vector<Vec3> total;
+  for (size_t k = 0; k < sum.size() && 2 * count[k] >= static_cast<int64_t>(members.size()); ++k)
+    total.push_back(sum[k] / static_cast<double>(count[k]));
+  if (total.size() < 2) return 0;
+  // c^i_j: node i's points by their nearest point of c^total.
+  std::map<std::pair<int32_t, size_t>, std::pair<Vec3, int64_t>> node_sums;
+  for (int64_t s : members)
+    for (int64_t row = runs.offsets[s]; row < runs.offsets[s + 1]; ++row) {
+      int32_t node = cluster.point_middle_node[static_cast<size_t>(row)];
+      if (node < 0) continue;
+      Vec3 point = point_of(runs.points, row);
+      size_t nearest = 0;
+      for (size_t k = 1; k < total.size(); ++k)
+        if ((total[k] - point).squaredNorm() < (total[nearest] - point).squaredNorm()) nearest = k;
+      auto& [node_sum, node_count] = node_sums[{node, nearest}];
+      if (node_count == 0) node_sum = Vec3::Zero();
+      node_sum += point;
+      ++node_count;
+    }
+  std::map<int32_t, bool> measured;
   double largest_m = 0;
-  for (const auto& [id, strands] : members)
+  for (const auto& [key, value] : node_sums) {
+    if (value.second < 5) continue;
+    measured[key.first] = true;
     largest_m = std::max(
-        largest_m,
-        (centre_strand(profiles, points_per, strands) - total).rowwise().norm().maxCoeff());
-  return largest_m;
+        largest_m, (value.first / static_cast<double>(value.second) - total[key.second]).norm());
+  }
+  return measured.size() >= 2 ? largest_m : 0;
 }
 
 /// The raw features of section 6.1 (the layout of raw_feature_names()).
@@ -155,6 +205,9 @@ ClusterRuns sampled_runs(const ClusterRuns& cluster, int max_count) {
     sample.ends_at_tip.push_back(cluster.ends_at_tip[i]);
     sample.arrival.push_back(cluster.arrival[i]);
     sample.middle_node.push_back(cluster.middle_node[i]);
+    sample.point_middle_node.insert(
+        sample.point_middle_node.end(), cluster.point_middle_node.begin() + cluster.runs.offsets[s],
+        cluster.point_middle_node.begin() + cluster.runs.offsets[s + 1]);
   }
   return sample;
 }
@@ -272,8 +325,10 @@ std::vector<ClusterRuns> cluster_runs(const StyleFeatureInput& input) {
         std::map<int32_t, int64_t> votes;
         for (int64_t row = start; row < stop; ++row) {
           int32_t group = point_group[static_cast<size_t>(row)];
-          if (group < 0 || group >= static_cast<int32_t>(input.group_middle_node.size())) continue;
-          int32_t node = input.group_middle_node[static_cast<size_t>(group)];
+          int32_t node = group >= 0 && group < static_cast<int32_t>(input.group_middle_node.size())
+                             ? input.group_middle_node[static_cast<size_t>(group)]
+                             : -1;
+          runs.point_middle_node.push_back(node);
           if (node >= 0) ++votes[node];
         }
         int32_t best = -1;
@@ -361,7 +416,7 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
     paper.gathering_ratio =
         spread.maxCoeff() > 0 ? spread(params.profile_points - 1) / spread.maxCoeff() : 1.0;
     paper.end_spread_h = spread(params.profile_points - 1) / h;
-    paper.twist_h = twist_m(profiles, params.profile_points, sample.middle_node) / h;
+    paper.twist_h = twist_m(sample, params.twist_step_h * h) / h;
     std::vector<double> scalp_distance_m(static_cast<size_t>(profiles.point_count()));
 #pragma omp parallel for schedule(dynamic, 256)
     for (int64_t row = 0; row < profiles.point_count(); ++row)

@@ -30,8 +30,11 @@ struct StyleFeatureInput {
 
 /// Settings of style_features().
 struct StyleFeatureParams {
-  /// Points per strand for the gathering ratio and the twist (equations 6 and 7).
+  /// Points per strand for the gathering ratio (equation 6).
   int profile_points = 20;
+  /// Spacing of the points of the centre strand of all middle nodes, c^total, for the
+  /// twist (equation 7), in H.
+  double twist_step_h = 0.02;
   /// Particles per strand for the raw features (section 6.1); 17 gives the paper's 190
   /// dimensions (raw_feature_count()).
   int raw_points = 17;
@@ -57,7 +60,8 @@ struct PaperFeatures {
   double root_share = 0;            ///< fixed: share of the cluster's strands that start at a root
   int middle_node_count = 0;        ///< braided: middle clusters (cluster-middle) in the cluster
   /// braided: equation (7), max_ij |c_j^i - c_j^total| over the centre strands c^i of
-  /// the middle nodes and c^total of all of them; 0 with fewer than two nodes.
+  /// the middle nodes and c^total of all of them, matched by position along c^total
+  /// (twist_m in style_features.cpp); 0 with fewer than two nodes.
   double twist_h = 0;
 
   // Ours, beyond the paper (the "extended" feature set): what tells a cap gathered by a
@@ -88,13 +92,15 @@ std::vector<std::string> raw_feature_names(int raw_points);
 /// The parts of grown strands in one cluster: every maximal run of consecutive points
 /// of a strand whose point cluster is the cluster (a run has at least two points).
 struct ClusterRuns {
-  StrandSet runs;                        ///< root side first
-  std::vector<uint8_t> starts_at_root;   ///< per run: it starts at a strand's root
-  std::vector<uint8_t> ends_at_tip;      ///< per run: it ends at a strand's tip
-  std::vector<Eigen::Vector3d> arrival;  ///< per run: the direction the strand comes
-                                         ///< in with (the root's normal at a root)
-  std::vector<int32_t> middle_node;      ///< per run: the middle cluster most of its
-                                         ///< points follow, or -1
+  StrandSet runs;                          ///< root side first
+  std::vector<uint8_t> starts_at_root;     ///< per run: it starts at a strand's root
+  std::vector<uint8_t> ends_at_tip;        ///< per run: it ends at a strand's tip
+  std::vector<Eigen::Vector3d> arrival;    ///< per run: the direction the strand comes
+                                           ///< in with (the root's normal at a root)
+  std::vector<int32_t> middle_node;        ///< per run: the middle cluster most of its
+                                           ///< points follow, or -1
+  std::vector<int32_t> point_middle_node;  ///< per point of the runs: the middle cluster
+                                           ///< of the group it follows, or -1
 };
 
 /// The runs of every cluster (#cluster_count entries).

@@ -129,15 +129,28 @@ TEST(StyleFeatures, TwistIsTheLargestDistanceOfANodeCentreFromTheCentreOfAllNode
   input.group_middle_node = {0, 1};  // group 0 in middle cluster 0, group 1 in 1
   // Node 0's strands run at x = +0.05, node 1's at x = -0.05: the centre of all is x = 0,
   // each node's centre 0.05 m from it; with H = 0.25, 0.2 H.
-  for (int i = 0; i < 3; ++i) {
-    add_strand(input, vertical(0.05f, 0.01f * static_cast<float>(i), 0.3f),
-               std::vector<int32_t>(11, 0), std::vector<int32_t>(11, 0));
-    add_strand(input, vertical(-0.05f, 0.01f * static_cast<float>(i), 0.3f),
-               std::vector<int32_t>(11, 0), std::vector<int32_t>(11, 1));
+  for (int i = 0; i < 5; ++i) {
+    add_strand(input, vertical(0.05f, 0.01f * static_cast<float>(i), 0.3f, 31),
+               std::vector<int32_t>(31, 0), std::vector<int32_t>(31, 0));
+    add_strand(input, vertical(-0.05f, 0.01f * static_cast<float>(i), 0.3f, 31),
+               std::vector<int32_t>(31, 0), std::vector<int32_t>(31, 1));
   }
   StyleFeatures features = style_features(input, {});
   EXPECT_EQ(features.paper[0].middle_node_count, 2);
   EXPECT_NEAR(features.paper[0].twist_h, 0.2, 1e-6);
+
+  // A strand that follows node 0 for its first half and node 1 for the second: its
+  // halves count for their own nodes at their own places along the cluster.
+  StyleFeatureInput halves = input;
+  std::vector<int32_t> group(31, 0);
+  std::fill(group.begin() + 15, group.end(), 1);
+  for (int i = 0; i < 5; ++i)
+    add_strand(halves, vertical(0.15f, 0.01f * static_cast<float>(i), 0.3f, 31),
+               std::vector<int32_t>(31, 0), group);
+  // The centre of all moves to x = 0.05 (15 strands at 0.05, -0.05, 0.15); node 0's
+  // points at the root end average (5 * 0.05 + 5 * 0.15) / 10 = 0.1, node 1's there
+  // -0.05: 0.1 m from the centre, 0.4 H.
+  EXPECT_NEAR(style_features(halves, {}).paper[0].twist_h, 0.4, 1e-6);
 }
 
 TEST(StyleFeatures, RawFeaturesHaveThePapers190DimensionsAndKnownValues) {
