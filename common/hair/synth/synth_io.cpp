@@ -33,6 +33,8 @@ const char* kind_name(ComponentSpec::Kind kind) {
       return "ponytail";
     case ComponentSpec::Kind::braid:
       return "braid";
+    case ComponentSpec::Kind::short_cap:
+      return "short_cap";
   }
   return "?";
 }
@@ -186,9 +188,11 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
         c.kind = ComponentSpec::Kind::ponytail;
       else if (kind == "braid")
         c.kind = ComponentSpec::Kind::braid;
+      else if (kind == "short_cap")
+        c.kind = ComponentSpec::Kind::short_cap;
       else
         throw Error::usage(where + "kind = \"" + kind +
-                           "\": expected normal, short_cards, ponytail or braid");
+                           "\": expected normal, short_cards, short_cap, ponytail or braid");
       read_key(item, where, "stream_count", c.stream_count);
       read_key(item, where, "length_min_m", c.length_min_m);
       read_key(item, where, "length_max_m", c.length_max_m);

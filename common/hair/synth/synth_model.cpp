@@ -130,6 +130,9 @@ struct Stream {
   HairStyle style = HairStyle::normal;
   int component = 0;
   bool trim_tips = true;  // true strands end at slightly different lengths
+  /// Per point, for hair lying on the scalp (short caps): every point across the stream
+  /// is put on the head surface at this lift (on_scalp); empty: a flat strip.
+  std::vector<double> scalp_lift_m;
 
   double length_m() const { return along_m.back(); }
 
@@ -158,7 +161,22 @@ struct Stream {
     auto [i, w] = locate(s);
     return (1 - w) * width_m[i] + w * width_m[i + 1];
   }
+  double scalp_lift_at(double s) const {
+    auto [i, w] = locate(s);
+    return (1 - w) * scalp_lift_m[i] + w * scalp_lift_m[i + 1];
+  }
 };
+
+/// `point`, near the head, moved to `lift_m` off the nearest point of the body (out of
+/// the head if it was inside): hair lying on the scalp across a stream's whole width (a
+/// flat 6 cm strip tangent to the head stands 5 mm off it at its edges).
+Vec3 on_scalp(const Head& head, const Vec3& point, double lift_m) {
+  auto nearest = head.body.nearest(point);
+  Vec3 out = point - nearest.closest_point;
+  if (out.norm() < 1e-9) out = point - head.centre;
+  if (out.dot(point - head.centre) < 0) out = -out;
+  return nearest.closest_point + lift_m * out.normalized();
+}
 
 void measure_arc_length(Stream& stream) {
   stream.along_m.assign(stream.points.size(), 0.0);
@@ -344,6 +362,95 @@ void add_loose_streams(const ComponentSpec& component, int component_index,
   }
 }
 
+/// Short hair lying on the head (short02, short03): cap grids fanning out from a crown
+/// whorl (the band position: `band_azimuth_deg`, `band_polar_deg`), one per stream, side
+/// by side around it. A grid's root lies `polar_min_deg` to `polar_max_deg` from the
+/// whorl; from there it flows over the head away from the whorl (turning by up to 12
+/// degrees, all grids alike: the swirl of a crown) down to the front hairline, lying on
+/// the scalp (scalp_lift_m at the root, 1.5 times that at the tip) and widening with the
+/// angle from the whorl so that the grids tile the scalp. A stream ends at the hairline,
+/// or before it when its drawn length is shorter. No band, no continuation: a stream is
+/// one grid (root-free), or a root piece and a tip piece when normal_pieces_max allows (a
+/// layered cut); every piece is short.
+void add_short_cap(const ComponentSpec& component, int component_index, const DefectSpec& defects,
+                   const Head& head, Rng& rng, std::vector<Stream>& streams) {
+  // The whorl and a frame around it: first towards the face, second towards +X.
+  Vec3 whorl = direction(component.band_azimuth_deg, component.band_polar_deg);
+  Vec3 towards_face = Vec3::UnitZ() - Vec3::UnitZ().dot(whorl) * whorl;
+  if (towards_face.norm() < 1e-6) towards_face = Vec3::UnitX() - Vec3::UnitX().dot(whorl) * whorl;
+  towards_face.normalize();
+  Vec3 towards_side = whorl.cross(towards_face);
+  auto away_from_whorl = [&](double around_deg, double from_whorl_deg) {
+    double around = radians(around_deg), from = radians(from_whorl_deg);
+    return Vec3(std::cos(from) * whorl + std::sin(from) * (std::cos(around) * towards_face +
+                                                           std::sin(around) * towards_side));
+  };
+  auto below_hairline = [](const Vec3& dir) {
+    double polar_deg = std::acos(std::clamp(dir.y(), -1.0, 1.0)) * 180.0 / kPi;
+    double azimuth_deg = std::atan2(dir.x(), dir.z()) * 180.0 / kPi;
+    return polar_deg > hairline_polar_deg(azimuth_deg);
+  };
+  int count = component.stream_count;
+  double sector_deg = (component.azimuth_max_deg - component.azimuth_min_deg) / count;
+  const double step_deg = kStep_m / head.radius_m * 180.0 / kPi;
+  // The whorl turns every grid the same way (neighbours stay side by side): by this much
+  // over 90 degrees from the whorl.
+  double swirl_deg = rng.uniform(-12.0, 12.0);
+  for (int k = 0; k < count; ++k) {
+    double around_deg = component.azimuth_min_deg + sector_deg * (k + 0.5 + rng.uniform(-0.1, 0.1));
+    double root_deg = rng.uniform(component.polar_min_deg, component.polar_max_deg);
+    double margin_deg = rng.uniform(0.0, 4.0);  // the tip this far short of the hairline
+    double length = rng.uniform(component.length_min_m, component.length_max_m);
+    // Directions from the root away from the whorl until the hairline, the drawn length
+    // (measured on the scalp) or the far side of the head.
+    std::vector<Vec3> directions;
+    double along = 0;
+    Vec3 previous = Vec3::Zero();
+    for (double from_deg = root_deg; from_deg < 170.0; from_deg += step_deg) {
+      double turned_deg = around_deg + swirl_deg * (from_deg - root_deg) / 90.0;
+      Vec3 dir = away_from_whorl(turned_deg, from_deg);
+      Vec3 margin_dir = away_from_whorl(turned_deg, from_deg + margin_deg);
+      if (below_hairline(margin_dir)) break;
+      Vec3 p = head.surface(dir).first;
+      if (!directions.empty()) along += (p - previous).norm();
+      if (along > length) break;
+      directions.push_back(dir);
+      previous = p;
+    }
+    if (directions.size() < 2) continue;  // the root is at the hairline
+    Stream stream;
+    stream.component = component_index;
+    stream.style = HairStyle::short_hair;
+    stream.trim_tips = false;
+    for (size_t i = 0; i < directions.size(); ++i) {
+      double lift = defects.scalp_lift_m * (1.0 + 0.5 * static_cast<double>(i) /
+                                                      static_cast<double>(directions.size() - 1));
+      auto [surface, outward] = head.surface(directions[i]);
+      stream.points.push_back(surface + lift * outward);
+      stream.scalp_lift_m.push_back(lift);
+    }
+    // Points found from afar (Head::surface) snap to the body's corners: smooth the
+    // curve, keeping it on the scalp.
+    for (int pass = 0; pass < 8; ++pass)
+      for (size_t i = 1; i + 1 < stream.points.size(); ++i) {
+        Vec3 smooth = 0.5 * stream.points[i] + 0.25 * (stream.points[i - 1] + stream.points[i + 1]);
+        stream.points[i] = pass < 4 ? on_scalp(head, smooth, stream.scalp_lift_m[i]) : smooth;
+      }
+    measure_arc_length(stream);
+    frame_stream(stream, head);
+    double width = component.strip_width_m * rng.uniform(0.9, 1.1);
+    stream.width_m.resize(stream.points.size());
+    for (size_t i = 0; i < stream.points.size(); ++i) {
+      double from_whorl = std::acos(std::clamp(directions[i].dot(whorl), -1.0, 1.0));
+      stream.width_m[i] = width * std::max(0.15, std::sin(from_whorl));
+    }
+    stream.pieces = cut_pieces(0, stream.length_m(), rng.integer(1, defects.normal_pieces_max),
+                               HairStyle::short_hair, defects, rng);
+    for (Piece& piece : stream.pieces) piece.rails = defects.cap_rails;
+    streams.push_back(std::move(stream));
+  }
+}
+
 /// A curve over the head from `root` to `band`: directions from the head centre
 /// interpolated on the sphere, each put on the surface, lifted from `lift_root_m` at the
 /// root to the band's own height at the end.
@@ -510,7 +617,7 @@ void add_braid(const ComponentSpec& component, int component_index, const Defect
 /// the patch and appends its vertex positions (x, y, z each) to `positions`, the arc
 /// length of each vertex to `vertex_along_m`, its faces to `mesh` and their UVs to `uv`.
 SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpec& defects,
-                       Rng& rng, std::vector<float>& positions, PolyMesh& mesh,
+                       const Head& head, Rng& rng, std::vector<float>& positions, PolyMesh& mesh,
                        std::vector<float>& uv, std::vector<float>& vertex_along_m) {
   SynthPatch patch;
   patch.style = piece.style;
@@ -547,7 +654,9 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
     for (int c = 0; c < columns; ++c) {
       double u = static_cast<double>(c) / (columns - 1) - 0.5;
       Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-      Vec3 p = centre + u * width * across + defects.jitter_m * jitter;
+      Vec3 p = centre + u * width * across;
+      if (!stream.scalp_lift_m.empty()) p = on_scalp(head, p, stream.scalp_lift_at(s));
+      p += defects.jitter_m * jitter;
       int32_t v = base + id[static_cast<size_t>(r * columns + c)];
       for (int k = 0; k < 3; ++k)
         positions[3 * static_cast<size_t>(v) + static_cast<size_t>(k)] = static_cast<float>(p[k]);
@@ -586,18 +695,23 @@ HairStyle style_at(const Stream& stream, double along_m) {
 }
 
 /// Dense true strands of a stream: `count` strands at fixed places across the stream's
-/// width and thickness (a third of its width), following its centre; the style of every
-/// point is appended to `point_style`.
-void add_true_strands(const Stream& stream, int32_t stream_id, int count, Rng& rng,
-                      std::vector<Points3f>& polylines, std::vector<int32_t>& strand_stream,
-                      std::vector<HairStyle>& point_style) {
+/// width and thickness (a third of its width; on the scalp: from half to 1.5 times its
+/// lift), following its centre; the style of every point is appended to `point_style`.
+void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head, int count,
+                      Rng& rng, std::vector<Points3f>& polylines,
+                      std::vector<int32_t>& strand_stream, std::vector<HairStyle>& point_style) {
   for (int j = 0; j < count; ++j) {
     double u = rng.uniform(-0.5, 0.5), v = rng.uniform(-0.5, 0.5) / 3.0;
     double end = stream.length_m() * (stream.trim_tips ? rng.uniform(0.9, 1.0) : 1.0);
     std::vector<Vec3> points;
-    for (size_t i = 0; i < stream.points.size() && stream.along_m[i] <= end; ++i)
-      points.push_back(stream.points[i] + u * stream.width_m[i] * stream.across[i] +
-                       v * stream.width_m[i] * stream.normal[i]);
+    for (size_t i = 0; i < stream.points.size() && stream.along_m[i] <= end; ++i) {
+      Vec3 across = u * stream.width_m[i] * stream.across[i];
+      points.push_back(
+          stream.scalp_lift_m.empty()
+              ? Vec3(stream.points[i] + across + v * stream.width_m[i] * stream.normal[i])
+              : on_scalp(head, stream.points[i] + across,
+                         stream.scalp_lift_m[i] * (1.0 + 3.0 * v)));
+    }
     if (points.size() < 2) continue;
     Points3f polyline(static_cast<Eigen::Index>(points.size()), 3);
     for (size_t i = 0; i < points.size(); ++i)
@@ -613,7 +727,7 @@ void add_true_strands(const Stream& stream, int32_t stream_id, int count, Rng& r
 
 const std::vector<std::string>& preset_names() {
   static const std::vector<std::string> names = {
-      "long_straight", "long_wavy", "medium_straight", "medium_wavy", "short",
+      "long_straight", "long_wavy", "medium_straight", "medium_wavy", "short",  "short_cap",
       "ponytail",      "braid",     "normal_braid",    "two_braids",  "half_up"};
   return names;
 }
@@ -648,6 +762,22 @@ HairStyleSpec preset(const std::string& name) {
     cards.strip_width_m = 0.025;
     spec.defects.rails_max = 3;
     spec.components = {cards};
+  } else if (name == "short_cap") {
+    // Like short02: the scalp covered by grids from the crown to the hairline, 3-4.5 mm
+    // off it; the hairline ends most grids before their drawn length does (0.4-0.7 H).
+    ComponentSpec cap;
+    cap.kind = Kind::short_cap;
+    cap.stream_count = 9;
+    cap.length_min_m = 0.12;
+    cap.length_max_m = 0.24;
+    cap.strip_width_m = 0.07;
+    cap.band_azimuth_deg = 180;  // the crown whorl, at the back of the top of the head
+    cap.band_polar_deg = 20;
+    cap.polar_min_deg = 3;  // roots 3-12 degrees from the whorl
+    cap.polar_max_deg = 12;
+    spec.defects.cap_rails = 6;
+    spec.defects.scalp_lift_m = 0.003;
+    spec.components = {cap};
   } else if (name == "ponytail") {
     ComponentSpec tail;
     tail.kind = Kind::ponytail;
@@ -722,6 +852,7 @@ HairStyleSpec preset(const std::string& name) {
 HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed) {
   Rng rng(seed ^ 0x9e3779b9u);
   for (ComponentSpec& component : spec.components) {
+    int preset_stream_count = component.stream_count;
     if (component.kind != ComponentSpec::Kind::braid)
       component.stream_count = std::max(
           3, static_cast<int>(std::lround(component.stream_count * rng.uniform(0.75, 1.25))));
@@ -729,6 +860,9 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed) {
     component.length_min_m *= scale;
     component.length_max_m *= scale;
     component.strip_width_m *= rng.uniform(0.85, 1.15);
+    // A short cap's grids share the scalp: fewer grids, wider ones.
+    if (component.kind == ComponentSpec::Kind::short_cap)
+      component.strip_width_m *= static_cast<double>(preset_stream_count) / component.stream_count;
     if (component.wave_amplitude_m > 0) component.wave_amplitude_m *= rng.uniform(0.7, 1.3);
     if (component.kind == ComponentSpec::Kind::braid)
       component.braid_period_m *= rng.uniform(0.85, 1.15);
@@ -742,6 +876,11 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed) {
   defects.triangulate_share = rng.chance(0.5) ? 0.0 : rng.uniform(0.05, 0.4);
   defects.reversed_share = rng.uniform(0.0, 0.3);
   defects.shuffled_share = rng.uniform(0.0, 0.1);
+  // A third of the short caps are layered cuts, each grid cut into a root and a tip
+  // piece (drawn last: the other presets' knobs stay as they were).
+  if (std::any_of(spec.components.begin(), spec.components.end(),
+                  [](const ComponentSpec& c) { return c.kind == ComponentSpec::Kind::short_cap; }))
+    defects.normal_pieces_max = rng.chance(1.0 / 3.0) ? 2 : 1;
   return spec;
 }
 
@@ -780,6 +919,9 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
       case ComponentSpec::Kind::braid:
         add_braid(component, index, spec.defects, head, rng, streams);
         break;
+      case ComponentSpec::Kind::short_cap:
+        add_short_cap(component, index, spec.defects, head, rng, streams);
+        break;
     }
   }
 
@@ -798,7 +940,7 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     int pieces = static_cast<int>(stream.pieces.size());
     for (int k = 0; k < pieces; ++k) {
       SynthPatch patch = build_patch(stream, stream.pieces[static_cast<size_t>(k)], spec.defects,
-                                     rng, positions, model.mesh, uv, model.vertex_along_m);
+                                     head, rng, positions, model.mesh, uv, model.vertex_along_m);
       patch.stream = stream_id;
       patch.index_in_stream = k;
       // Algorithm 1 of the paper: no preceding group and no following one: root-free; no
@@ -815,7 +957,7 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     centres.push_back(std::move(centre));
     model.stream_style.push_back(stream.style);
     model.stream_component.push_back(stream.component);
-    add_true_strands(stream, stream_id, strands_per_stream, strand_rng, strand_polylines,
+    add_true_strands(stream, stream_id, head, strands_per_stream, strand_rng, strand_polylines,
                      strand_stream, model.strand_point_style);
   }
   model.mesh.vertices = Eigen::Map<const Points3f>(

@@ -25,27 +25,36 @@ enum class VertexOrder : int8_t { natural = 0, reversed = 1, shuffled = 2 };
 
 /// One part of a hairstyle: a kind of hair grown from a region of the scalp.
 struct ComponentSpec {
-  enum class Kind { normal, short_cards, ponytail, braid };
+  /// normal: strips hanging from the scalp; short_cards: cards standing off the scalp;
+  /// short_cap: cap grids lying on the scalp from the crown to the hairline (short02);
+  /// ponytail: cap grids to a band, tails from it; braid: caps to a braid top, a braid.
+  enum class Kind { normal, short_cards, ponytail, braid, short_cap };
   Kind kind = Kind::normal;
-  /// Streams (strips, cards; for a ponytail the cap patches, one tail strip each).
-  /// Braids always have three streams.
+  /// Streams (strips, cards; for a ponytail the cap patches, one tail strip each; for a
+  /// short cap its grids, side by side around the whorl). Braids always have three
+  /// streams.
   int stream_count = 40;
-  /// Length of a stream from its root to its tip, drawn uniformly in [min, max].
+  /// Length of a stream from its root to its tip, drawn uniformly in [min, max] (a short
+  /// cap's stream ends at the hairline if that comes first).
   double length_min_m = 0.30;
   double length_max_m = 0.40;
   /// Waves across the strip: amplitude and wavelength (0 amplitude: straight).
   double wave_amplitude_m = 0.0;
   double wavelength_m = 0.08;
-  /// Width of a strip or card (caps: at the hairline; braid pieces: the piece).
+  /// Width of a strip or card (caps: at the hairline; a short cap's grids: 90 degrees
+  /// from the whorl, narrowing towards it as sin(angle); braid pieces: the piece).
   double strip_width_m = 0.03;
   /// Scalp region of the roots: azimuth around +Y from the face (+Z, 0) towards +X,
   /// in degrees, and polar angle from the crown, in degrees. The front hairline is
-  /// always respected.
+  /// always respected. A short cap's grids fan out from its crown whorl (the band
+  /// position): they share the azimuth range evenly around the whorl, each root at an
+  /// angle in [polar_min_deg, polar_max_deg] from the whorl.
   double azimuth_min_deg = -180.0;
   double azimuth_max_deg = 180.0;
   double polar_min_deg = 0.0;
   double polar_max_deg = 115.0;
-  /// Ponytail band or braid top: a point on the head at this azimuth and polar angle.
+  /// Ponytail band, braid top or short cap's crown whorl: a point on the head at this
+  /// azimuth and polar angle.
   double band_azimuth_deg = 180.0;
   double band_polar_deg = 70.0;
   /// Braid: half width across (a) and depth (b) of the three streams around the axis,
@@ -64,7 +73,8 @@ struct DefectSpec {
   int rails_max = 4;
   int cap_rails = 5;                ///< rails of a cap grid
   double segment_length_m = 0.015;  ///< quad length along the hair
-  /// Normal hair: pieces each stream is cut into (1: one strip from root to tip).
+  /// Normal hair and short caps: pieces each stream is cut into, drawn in [1, max] (1:
+  /// one strip or grid from root to tip; a short cap in 2: a layered cut).
   int normal_pieces_max = 1;
   /// Braid pieces: length of one piece (about a third of a period: one crossing).
   double braid_piece_length_m = 0.025;
@@ -74,11 +84,13 @@ struct DefectSpec {
   /// Share of junctions where consecutive patches overlap instead, by overlap_m.
   double overlap_share = 0.2;
   double overlap_m = 0.006;
-  double jitter_m = 0.0008;         ///< uniform noise on every vertex, each axis
-  double triangulate_share = 0.1;   ///< patches whose quads are split into triangles
-  double reversed_share = 0.1;      ///< patches numbered tip to root
-  double shuffled_share = 0.05;     ///< patches numbered at random
-  double scalp_lift_m = 0.004;      ///< roots this far above the head surface
+  double jitter_m = 0.0008;        ///< uniform noise on every vertex, each axis
+  double triangulate_share = 0.1;  ///< patches whose quads are split into triangles
+  double reversed_share = 0.1;     ///< patches numbered tip to root
+  double shuffled_share = 0.05;    ///< patches numbered at random
+  /// Roots this far above the head surface (a short cap lies this far off the scalp at
+  /// the crown, rising to 1.5 times this at the hairline).
+  double scalp_lift_m = 0.004;
   double body_clearance_m = 0.008;  ///< hair kept this far off the body
 };
 
