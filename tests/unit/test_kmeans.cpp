@@ -10,24 +10,10 @@
 #include "hair/adjusted_rand_index.h"
 #include "hair/error.h"
 #include "hair/kmeans.h"
+#include "unit/feature_blobs.h"
 
 namespace hair {
 namespace {
-
-/// Normal draws from a fixed generator (Box-Muller on its top 53 bits), the same on
-/// every platform.
-class Normal {
- public:
-  explicit Normal(uint64_t seed) : random_(seed) {}
-  double operator()() {
-    double u = static_cast<double>(random_() >> 11) * 0x1.0p-53;
-    double v = static_cast<double>(random_() >> 11) * 0x1.0p-53;
-    return std::sqrt(-2 * std::log(1 - u)) * std::cos(2 * std::numbers::pi * v);
-  }
-
- private:
-  std::mt19937_64 random_;
-};
 
 /// Points of isotropic Gaussian blobs (standard deviation `sigma`) around `centres`,
 /// the blobs interleaved (point i belongs to blob i mod #blobs) so that no blob is a
@@ -38,7 +24,7 @@ struct Blobs {
 };
 
 Blobs blobs(const Eigen::MatrixXd& centres, int per_blob, double sigma, uint64_t seed) {
-  Normal normal(seed);
+  test::NormalDraws normal(seed);
   auto count = static_cast<int>(centres.rows());
   Blobs result;
   result.points.resize(count * per_blob, centres.cols());

@@ -41,20 +41,6 @@ const char* kind_name(ComponentSpec::Kind kind) {
 
 }  // namespace
 
-const char* style_name(HairStyle style) {
-  switch (style) {
-    case HairStyle::normal:
-      return "normal";
-    case HairStyle::fixed:
-      return "fixed";
-    case HairStyle::short_hair:
-      return "short";
-    case HairStyle::braided:
-      return "braided";
-  }
-  return "?";
-}
-
 std::string obj_text(const SynthModel& model, double unit_scale) {
   const PolyMesh& mesh = model.mesh;
   std::string text = fmt::format(

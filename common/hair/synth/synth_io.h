@@ -35,7 +35,4 @@ void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale
 /// Streams of the model per style: {normal, fixed, short, braided}.
 std::array<int, 4> streams_by_style(const SynthModel& model);
 
-/// The truth's word for a style ("normal", "fixed", "short", "braided").
-const char* style_name(HairStyle style);
-
 }  // namespace hair::synth

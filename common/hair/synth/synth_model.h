@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "hair/hair_style.h"
 #include "hair/poly_mesh.h"
 #include "hair/strand_set.h"
 
@@ -17,8 +18,8 @@ namespace hair::synth {
 /// Group types of the paper's Algorithm 1 (section 4.1), in the truth's enum order.
 enum class GroupType : int8_t { root_free = 0, root_connected = 1, middle = 2, tip = 3 };
 
-/// Styles of the paper's section 5.1, in the truth's enum order.
-enum class HairStyle : int8_t { normal = 0, fixed = 1, short_hair = 2, braided = 3 };
+/// Styles of the paper's section 5.1 (the truth's enum order is hair::HairStyle's).
+using HairStyle = hair::HairStyle;
 
 /// How a patch's vertex ids run, a defect artists' meshes have (DESIGN.md).
 enum class VertexOrder : int8_t { natural = 0, reversed = 1, shuffled = 2 };
