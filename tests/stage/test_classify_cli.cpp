@@ -19,6 +19,7 @@
 #include "hair/h5/file.h"
 #include "hair/hair_style.h"
 #include "hair/style_io.h"
+#include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
 #include "support/run_command.h"
 
@@ -155,11 +156,7 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
       edited_model(directory / "v2.yml", "version: 1", "version: 2").string();
   const std::string other_format =
       edited_model(directory / "format.yml", "hairstyle.style_model", "something.else").string();
-  struct Case {
-    std::vector<std::string> arguments;
-    std::string expected;  ///< in the error line
-  };
-  const std::vector<Case> cases = {
+  const std::vector<hair::test::FailureCase> cases = {
       {{(directory / "missing.h5").string(), clusters, strands, "--model", model}, "missing.h5"},
       {{(directory / "text.h5").string(), clusters, strands, "--model", model}, "not an HDF5 file"},
       {{clusters, clusters, strands, "--model", model}, "expected hairstyle.extract"},
@@ -173,28 +170,8 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
       {{extract, clusters, strands, "--model", model, "--classifier", "knn"}, "classifier"},
       {{extract, clusters, strands}, "--model"},
   };
-  const fs::path folder = directory / "failures";
-  fs::create_directories(folder);
-  const fs::path existing = folder / "existing.h5";
-  const std::string existing_bytes = read_file_bytes(braid.clusters);
-  fs::copy_file(braid.clusters, existing);
-  for (const Case& bad : cases) {
-    for (const fs::path& output : {folder / "new.h5", existing}) {
-      std::vector<std::string> arguments = bad.arguments;
-      arguments.insert(arguments.end(), {"-o", output.string()});
-      auto result = run_command(kBin / "classify", arguments);
-      EXPECT_EQ(result.exit_code, 2) << bad.expected << ": " << result.err;
-      std::vector<std::string> lines = text_lines(result.err);
-      ASSERT_EQ(lines.size(), 1u) << result.err;
-      EXPECT_TRUE(lines[0].starts_with("classify: error: ")) << lines[0];
-      EXPECT_NE(lines[0].find(bad.expected), std::string::npos) << lines[0];
-      std::vector<std::string> left;
-      for (const auto& entry : fs::directory_iterator(folder))
-        left.push_back(entry.path().filename().string());
-      EXPECT_EQ(left, std::vector<std::string>{"existing.h5"}) << bad.expected;
-      EXPECT_TRUE(read_file_bytes(existing) == existing_bytes) << bad.expected;
-    }
-  }
+  hair::test::expect_clean_failures(kBin / "classify", "classify", cases, directory / "failures",
+                                    braid.clusters);
 }
 
 }  // namespace

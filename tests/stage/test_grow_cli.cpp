@@ -21,6 +21,7 @@
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
 #include "hair/strand_set.h"
+#include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
 #include "support/run_command.h"
 
@@ -203,11 +204,7 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
   hair::test::write_text_file(directory / "text.h5", "not HDF5\n");
   const std::string extract = braid.extract.string(), types = braid.types.string(),
                     clusters = braid.clusters.string();
-  struct Case {
-    std::vector<std::string> arguments;
-    std::string expected;  ///< in the error line
-  };
-  const std::vector<Case> cases = {
+  const std::vector<hair::test::FailureCase> cases = {
       {{(directory / "missing.h5").string(), types, clusters}, "missing.h5"},
       {{(directory / "text.h5").string(), types, clusters}, "not an HDF5 file"},
       {{extract_with_nan(braid.extract, directory / "nan_strand.h5", "/strands/points").string(),
@@ -226,31 +223,8 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
       {{extract, types, clusters, "--scalp_cover_h", "1e-6"}, "no scalp triangle"},
       {{extract, types}, "CLUSTERS_H5"},
   };
-  // Each case twice: to a new output (none may appear) and over an existing file
-  // (left as it was).
-  const fs::path folder = directory / "failures";
-  fs::create_directories(folder);
-  const fs::path existing = folder / "existing.h5";
-  const std::string existing_bytes = read_file_bytes(braid.clusters);
-  fs::copy_file(braid.clusters, existing);
-  for (const Case& bad : cases) {
-    for (const fs::path& output : {folder / "new.h5", existing}) {
-      std::vector<std::string> arguments = bad.arguments;
-      arguments.insert(arguments.end(), {"-o", output.string()});
-      auto result = run_command(kBin / "grow", arguments);
-      EXPECT_EQ(result.exit_code, 2) << bad.expected << ": " << result.err;
-      std::vector<std::string> lines = text_lines(result.err);
-      ASSERT_EQ(lines.size(), 1u) << result.err;
-      EXPECT_TRUE(lines[0].starts_with("grow: error: ")) << lines[0];
-      EXPECT_NE(lines[0].find(bad.expected), std::string::npos) << lines[0];
-      std::vector<std::string> left;
-      for (const auto& entry : fs::directory_iterator(folder))
-        left.push_back(entry.path().filename().string());
-      std::sort(left.begin(), left.end());
-      EXPECT_EQ(left, std::vector<std::string>{"existing.h5"}) << bad.expected;
-      EXPECT_TRUE(read_file_bytes(existing) == existing_bytes) << bad.expected;
-    }
-  }
+  hair::test::expect_clean_failures(kBin / "grow", "grow", cases, directory / "failures",
+                                    braid.clusters);
 }
 
 TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
