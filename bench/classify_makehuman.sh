@@ -24,25 +24,9 @@ labels=data/labels/makehuman_styles.tsv
 work=$(mktemp -d "${TMPDIR:-/tmp}/classify_makehuman.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-# A copy of the binaries, so that a rebuild while this runs does not change them.
-mkdir -p "$work/bin"
-for tool in extract typeify cluster-middle cluster-all grow classify hair-render; do
-  [[ -x "${BIN:-build/bin}/$tool" ]] || { echo "classify_makehuman: ${BIN:-build/bin}/$tool is missing" >&2; exit 1; }
-  cp "${BIN:-build/bin}/$tool" "$work/bin/"
-done
+source bench/common.sh
+copy_binaries classify_makehuman "$work" extract typeify cluster-middle cluster-all grow classify hair-render
 bin=$work/bin
-
-median() { sort -g | awk '{v[NR]=$1} END {print (NR%2 ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2)}'; }
-
-# time_ms COMMAND...: median wall time of RUNS runs, in ms.
-time_ms() {
-  local run start
-  for ((run = 0; run < runs; ++run)); do
-    start=$(date +%s%N)
-    "$@" >/dev/null 2>&1
-    echo $(($(date +%s%N) - start))
-  done | median | awk '{ printf "%.0f\n", $1 / 1e6 }'
-}
 
 # styles FILE DATASET: the clusters' styles of an enum dataset of styles.h5, as words,
 # with how many strands each has, e.g. "fixed (6466), normal (464)"; unclassified left out.

@@ -16,7 +16,7 @@ threads=${THREADS:-0}
 work=$(mktemp -d "${TMPDIR:-/tmp}/extract_makehuman.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-median() { sort -g | awk '{v[NR]=$1} END {print (NR%2 ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2)}'; }
+source bench/common.sh
 
 echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); extract --threads $threads; median of $runs runs."
 echo
