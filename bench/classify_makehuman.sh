@@ -43,11 +43,7 @@ table="| model | clusters | classify (ms) | deterministic | hand labels | random
 for mesh in "$makehuman"/hair/*.obj; do
   model=$(basename "$mesh" .obj)
   dir=$work/$model
-  mkdir -p "$dir"
-  "$bin/extract" "$mesh" --body "$makehuman/body.obj" -o "$dir/extract.h5" --params "$params/extract.toml" --quiet
-  "$bin/typeify" "$dir/extract.h5" -o "$dir/types.h5" --params "$params/typeify.toml" --quiet
-  "$bin/cluster-middle" "$dir/types.h5" -o "$dir/middle.h5" --params "$params/cluster-middle.toml" --quiet
-  "$bin/cluster-all" "$dir/types.h5" "$dir/middle.h5" -o "$dir/clusters.h5" --params "$params/cluster-all.toml" --quiet
+  pipeline_to_clusters "$mesh" "$makehuman/body.obj" "$dir"
   "$bin/grow" "$dir/extract.h5" "$dir/types.h5" "$dir/clusters.h5" -o "$dir/strands.h5" --params "$params/grow.toml" --quiet
   classify=("$bin/classify" "$dir/extract.h5" "$dir/clusters.h5" "$dir/strands.h5" --model "$model_file" --params "$params/classify.toml" --quiet --reproducible)
   ms=$(time_ms "${classify[@]}" -o "$dir/styles.h5" --threads "$threads")

@@ -26,3 +26,15 @@ time_ms() {
     echo $(($(date +%s%N) - start))
   done | median | awk '{ printf "%.0f\n", $1 / 1e6 }'
 }
+
+# pipeline_to_clusters MESH BODY DIR: extract, typeify, cluster-middle and cluster-all
+# of MESH on BODY into DIR/{extract,types,middle,clusters}.h5, with $bin's binaries and
+# $params's parameter files.
+pipeline_to_clusters() {
+  local mesh=$1 body=$2 dir=$3
+  mkdir -p "$dir"
+  "$bin/extract" "$mesh" --body "$body" -o "$dir/extract.h5" --params "$params/extract.toml" --quiet
+  "$bin/typeify" "$dir/extract.h5" -o "$dir/types.h5" --params "$params/typeify.toml" --quiet
+  "$bin/cluster-middle" "$dir/types.h5" -o "$dir/middle.h5" --params "$params/cluster-middle.toml" --quiet
+  "$bin/cluster-all" "$dir/types.h5" "$dir/middle.h5" -o "$dir/clusters.h5" --params "$params/cluster-all.toml" --quiet
+}
