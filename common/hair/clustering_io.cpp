@@ -55,10 +55,8 @@ std::vector<int32_t> read_middle_clusters(const h5::File& file, size_t group_cou
   h5::require_schema(file, kMiddleSchema);
   std::vector<int32_t> middle_cluster = h5::read_vector<int32_t>(file, "/groups/middle_cluster");
   if (middle_cluster.size() != group_count)
-    throw Error::bad_dataset(file.name(), "/groups/middle_cluster",
-                             "has " + std::to_string(middle_cluster.size()) +
-                                 " groups, the types file " + std::to_string(group_count) +
-                                 ": made from another model");
+    throw Error::other_model(file.name(), "/groups/middle_cluster", middle_cluster.size(), "groups",
+                             "the types file", group_count);
   return middle_cluster;
 }
 

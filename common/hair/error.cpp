@@ -34,6 +34,13 @@ Error Error::bad_dataset(std::string file, std::string dataset, std::string reas
   return Error(ErrorKind::bad_input, std::move(file), std::move(dataset), std::move(reason));
 }
 
+Error Error::other_model(std::string file, std::string dataset, size_t count,
+                         const std::string& what, const std::string& other, size_t other_count) {
+  return bad_dataset(std::move(file), std::move(dataset),
+                     "has " + std::to_string(count) + " " + what + ", " + other + " " +
+                         std::to_string(other_count) + ": made from another model");
+}
+
 Error Error::usage(std::string reason) {
   return Error(ErrorKind::usage, {}, {}, std::move(reason));
 }

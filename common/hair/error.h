@@ -23,6 +23,10 @@ class Error : public std::runtime_error {
   static Error bad_dataset(std::string file, std::string dataset, std::string reason);
   static Error usage(std::string reason);
   static Error runtime(std::string file, std::string reason);
+  /// Files of two models given together: "<file>:<dataset>: has <count> <what>, <other>
+  /// <other_count>: made from another model".
+  static Error other_model(std::string file, std::string dataset, size_t count,
+                           const std::string& what, const std::string& other, size_t other_count);
 
   ErrorKind kind() const { return kind_; }
   const std::string& file() const { return file_; }

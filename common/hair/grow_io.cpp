@@ -27,18 +27,14 @@ GrowInput read_grow_input(const h5::File& extract, const h5::File& types,
 
   TypedGroups typed = read_typed_groups(types);
   if (typed.type.size() != group_count)
-    throw Error::bad_dataset(types.name(), "/groups/type",
-                             "has " + std::to_string(typed.type.size()) + " groups, " +
-                                 extract.name() + " " + std::to_string(group_count) +
-                                 ": made from another model");
+    throw Error::other_model(types.name(), "/groups/type", typed.type.size(), "groups",
+                             extract.name(), group_count);
   input.group_type = std::move(typed.type);
 
   GroupClusters grouped = read_group_clusters(clusters);
   if (grouped.cluster.size() != group_count)
-    throw Error::bad_dataset(clusters.name(), "/groups/cluster",
-                             "has " + std::to_string(grouped.cluster.size()) + " groups, " +
-                                 extract.name() + " " + std::to_string(group_count) +
-                                 ": made from another model");
+    throw Error::other_model(clusters.name(), "/groups/cluster", grouped.cluster.size(), "groups",
+                             extract.name(), group_count);
   for (int32_t cluster : grouped.cluster)
     if (cluster < 0)
       throw Error::bad_dataset(clusters.name(), "/groups/cluster", "a group has no cluster");

@@ -26,10 +26,8 @@ StyleFeatureInput read_style_feature_input(const h5::File& extract, const h5::Fi
 
   GroupClusters grouped = read_group_clusters(clusters);
   if (grouped.cluster.size() != group_count)
-    throw Error::bad_dataset(clusters.name(), "/groups/cluster",
-                             "has " + std::to_string(grouped.cluster.size()) + " groups, " +
-                                 extract.name() + " " + std::to_string(group_count) +
-                                 ": made from another model");
+    throw Error::other_model(clusters.name(), "/groups/cluster", grouped.cluster.size(), "groups",
+                             extract.name(), group_count);
   input.cluster_count = static_cast<int32_t>(grouped.starts_at_root.size());
   input.group_cluster = std::move(grouped.cluster);
   std::vector<int32_t> node = h5::read_vector<int32_t>(clusters, "/groups/node");
@@ -43,10 +41,8 @@ StyleFeatureInput read_style_feature_input(const h5::File& extract, const h5::Fi
   GrownStrands grown = read_grown_strands(strands);
   auto grown_clusters = h5::read_vector<int64_t>(strands, "/clusters/strand_count").size();
   if (grown_clusters != static_cast<size_t>(input.cluster_count))
-    throw Error::bad_dataset(strands.name(), "/clusters/strand_count",
-                             "has " + std::to_string(grown_clusters) + " clusters, " +
-                                 clusters.name() + " " + std::to_string(input.cluster_count) +
-                                 ": made from another model");
+    throw Error::other_model(strands.name(), "/clusters/strand_count", grown_clusters, "clusters",
+                             clusters.name(), static_cast<size_t>(input.cluster_count));
   input.strands = std::move(grown.strands);
   input.head_height_m = grown.head_height_m;
   input.source = strands.name();
