@@ -10,7 +10,7 @@
 #
 # Environment: BIN (default build/bin), RUNS (default 5), THREADS (classify --threads,
 # default 0 = all), PARAMS (default pipelines/default), MODEL (default
-# models/style_paper.yml), PICTURES (default: none).
+# models/style_extended.yml), PICTURES (default: none).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -18,7 +18,7 @@ makehuman=${1:-../shared/data/makehuman}
 runs=${RUNS:-5}
 threads=${THREADS:-0}
 params=${PARAMS:-pipelines/default}
-model_file=${MODEL:-models/style_paper.yml}
+model_file=${MODEL:-models/style_extended.yml}
 pictures=${PICTURES:-}
 labels=data/labels/makehuman_styles.tsv
 work=$(mktemp -d "${TMPDIR:-/tmp}/classify_makehuman.XXXXXX")

@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
   app.cli().add_option("STRANDS_H5", strands_path, "strands.h5 from the grow stage")->required();
   app.cli()
       .add_option("--model", model_path,
-                  "style model file from hair-train-style (models/style_paper.yml)")
+                  "style model file from hair-train-style: models/style_extended.yml (the "
+                  "paper's features and ours) or models/style_paper.yml")
       ->required();
   std::string classifier = "random_forest";
   app.params().add("classifier", classifier,

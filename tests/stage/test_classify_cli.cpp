@@ -35,7 +35,9 @@ using hair::test::SampleOutputs;
 using hair::test::TemporaryDirectory;
 using hair::test::text_lines;
 
-const fs::path kModel = fs::path(HAIR_SOURCE_DIR) / "models" / "style_paper.yml";
+// The default model (Makefile.pipeline's STYLE_MODEL) and the one on the paper's features.
+const fs::path kModel = fs::path(HAIR_SOURCE_DIR) / "models" / "style_extended.yml";
+const fs::path kPaperModel = fs::path(HAIR_SOURCE_DIR) / "models" / "style_paper.yml";
 
 class ClassifyCli : public ::testing::Test {
  protected:
@@ -102,6 +104,20 @@ TEST_F(ClassifyCli, ThePonytailHasAFixedCapAndANormalTail) {
   EXPECT_GE(words.count("fixed"), 1u);
   EXPECT_GE(words.count("normal"), 1u);
   EXPECT_EQ(words.count("braided"), 0u);
+}
+
+TEST_F(ClassifyCli, ThePapersFeaturesModelClassifiesThePonytailToo) {
+  const SampleOutputs ponytail = sample("ponytail01");
+  fs::path path = directory() / "paper.h5";
+  run_stage("classify",
+            {ponytail.extract.string(), ponytail.clusters.string(), ponytail.strands.string(),
+             "--model", kPaperModel.string(), "-o", path.string()});
+  std::multiset<std::string> words = styles_found(path);
+  EXPECT_GE(words.count("fixed"), 1u);
+  EXPECT_GE(words.count("normal"), 1u);
+  EXPECT_EQ(hair::h5::read_string_attribute(hair::h5::File::open_read_only(path), "/",
+                                            "model_feature_set"),
+            "paper");
 }
 
 TEST_F(ClassifyCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
