@@ -251,7 +251,10 @@ int main(int argc, char** argv) {
       std::vector<bool> real(first.real_mesh.begin(), first.real_mesh.end());
       std::vector<int32_t> folds;
       if (fold_by == "model") folds = hair::grouped_folds(first.model, params.folds, params.seed);
-      std::string report = "## Data\n\n" + data_summary(first) + "\nFolds: " +
+      std::string command = "hair-train-style";
+      for (int a = 1; a < argc; ++a) command += std::string(" ") + argv[a];
+      std::string report = "# Style classifiers: cross-validation\n\nWritten by `" + command +
+                           "`.\n\n## Data\n\n" + data_summary(first) + "\nFolds: " +
                            (fold_by == "model" ? "by model (a model's clusters in one fold)"
                                                : "stratified by style, cluster by cluster") +
                            ".\n";
