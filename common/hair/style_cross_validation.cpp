@@ -41,6 +41,7 @@ StyleCrossValidation style_cross_validation(const Eigen::MatrixXd& features,
         throw Error::usage("style cross-validation: fold " + std::to_string(fold) + " outside 0.." +
                            std::to_string(params.folds - 1));
     result.fold.assign(fold_of_row.begin(), fold_of_row.end());
+    result.given_folds = true;
   }
   result.svm_predicted.assign(labels.size(), 0);
   result.forest_predicted.assign(labels.size(), 0);

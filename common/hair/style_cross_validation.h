@@ -15,9 +15,10 @@ namespace hair {
 /// What a cross-validation of the two style classifiers measured.
 struct StyleCrossValidation {
   int folds = 0;
-  std::vector<int32_t> class_labels;      ///< k, the distinct labels of the rows, ascending
-  std::vector<int32_t> fold;              ///< n, the fold of every row (its test fold)
-  std::vector<int32_t> svm_predicted;     ///< n, each row predicted by the SVM of its fold
+  bool given_folds = false;            ///< the caller's folds (e.g. by model), not stratified ones
+  std::vector<int32_t> class_labels;   ///< k, the distinct labels of the rows, ascending
+  std::vector<int32_t> fold;           ///< n, the fold of every row (its test fold)
+  std::vector<int32_t> svm_predicted;  ///< n, each row predicted by the SVM of its fold
   std::vector<int32_t> forest_predicted;  ///< n, likewise by the random forest
   ClassificationScores svm;               ///< scores of svm_predicted, over class_labels
   ClassificationScores forest;            ///< scores of forest_predicted, over class_labels

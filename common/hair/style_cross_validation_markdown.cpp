@@ -45,8 +45,8 @@ void append_confusion(std::string& text, const char* title, const StyleCrossVali
 std::string style_cross_validation_markdown(const StyleCrossValidation& result,
                                             std::string_view subset_name) {
   bool with_subset = result.svm.subset_rows > 0;
-  std::string text = fmt::format("{}-fold stratified cross-validation, {} rows\n\n", result.folds,
-                                 result.svm.rows);
+  std::string text = fmt::format("{}-fold {} cross-validation, {} rows\n\n", result.folds,
+                                 result.given_folds ? "grouped" : "stratified", result.svm.rows);
   text += "| classifier | accuracy |";
   text += with_subset ? fmt::format(" {} |\n|---|---:|---:|\n", subset_name) : "\n|---|---:|\n";
   auto accuracy_row = [&](const char* name, const ClassificationScores& scores) {
