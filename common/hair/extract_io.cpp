@@ -53,4 +53,13 @@ void write_extract_file(h5::File& file, const ExtractResult& result, const Extra
   h5::write_vector(file, "/body/scalp_triangle", result.scalp_triangle);
 }
 
+ExtractedBody read_extracted_body(const h5::File& extract) {
+  h5::require_schema(extract, kExtractSchema);
+  ExtractedBody body;
+  body.vertices = h5::read_matrix<float, 3>(extract, "/body/vertices");
+  body.triangles = h5::read_matrix<int32_t, 3>(extract, "/body/triangles");
+  body.scalp_triangle = h5::read_vector<uint8_t>(extract, "/body/scalp_triangle");
+  return body;
+}
+
 }  // namespace hair

@@ -20,9 +20,10 @@ GrowInput read_grow_input(const h5::File& extract, const h5::File& types,
   input.source = extract.name();
   input.input_strands = std::move(extracted.strands);
   input.head_height_m = extracted.head_height_m;
-  input.body_vertices = h5::read_matrix<float, 3>(extract, "/body/vertices");
-  input.body_triangles = h5::read_matrix<int32_t, 3>(extract, "/body/triangles");
-  input.scalp_triangle = h5::read_vector<uint8_t>(extract, "/body/scalp_triangle");
+  ExtractedBody body = read_extracted_body(extract);
+  input.body_vertices = std::move(body.vertices);
+  input.body_triangles = std::move(body.triangles);
+  input.scalp_triangle = std::move(body.scalp_triangle);
   auto group_count = extracted.group_first_strand.size() - 1;
 
   TypedGroups typed = read_typed_groups(types);

@@ -18,10 +18,10 @@ namespace hair {
 StyleFeatureInput read_style_feature_input(const h5::File& extract, const h5::File& clusters,
                                            const h5::File& strands) {
   StyleFeatureInput input;
-  h5::require_schema(extract, kExtractSchema);
-  input.body_vertices = h5::read_matrix<float, 3>(extract, "/body/vertices");
-  input.body_triangles = h5::read_matrix<int32_t, 3>(extract, "/body/triangles");
-  input.scalp_triangle = h5::read_vector<uint8_t>(extract, "/body/scalp_triangle");
+  ExtractedBody body = read_extracted_body(extract);
+  input.body_vertices = std::move(body.vertices);
+  input.body_triangles = std::move(body.triangles);
+  input.scalp_triangle = std::move(body.scalp_triangle);
   auto group_count = h5::read_vector<int32_t>(extract, "/groups/face_count").size();
 
   GroupClusters grouped = read_group_clusters(clusters);

@@ -47,12 +47,10 @@ int main(int argc, char** argv) {
     hair::Triangles3i hair_triangles =
         hair::fan_triangulation(hair::h5::read_vector<int64_t>(extract, "/mesh/face_offsets"),
                                 hair::h5::read_vector<int32_t>(extract, "/mesh/face_vertices"));
-    hair::GrowMeasures m =
-        hair::measure_grown_strands(grown.strands, hair_vertices, hair_triangles,
-                                    hair::h5::read_matrix<float, 3>(extract, "/body/vertices"),
-                                    hair::h5::read_matrix<int32_t, 3>(extract, "/body/triangles"),
-                                    hair::h5::read_vector<uint8_t>(extract, "/body/scalp_triangle"),
-                                    grown.head_height_m, samples);
+    hair::ExtractedBody body = hair::read_extracted_body(extract);
+    hair::GrowMeasures m = hair::measure_grown_strands(
+        grown.strands, hair_vertices, hair_triangles, body.vertices, body.triangles,
+        body.scalp_triangle, grown.head_height_m, samples);
     std::printf("| %s | %lld | %lld | %.4f / %.4f | %.4f / %.4f | %.2f%% | %.4f / %.4f |\n",
                 (name.empty() ? strands_path : name).c_str(),
                 static_cast<long long>(grown.strands.strand_count()),

@@ -33,8 +33,9 @@ ExtractScene read_extract_scene(const h5::File& extract) {
   // The schema binds n_groups here and checks that every strand's group is below it.
   scene.group_count =
       static_cast<size_t>(h5::dataset_info(extract, "/groups/face_count").shape.at(0));
-  scene.body_vertices = h5::read_matrix<float, 3>(extract, "/body/vertices");
-  scene.body_triangles = h5::read_matrix<int32_t, 3>(extract, "/body/triangles");
+  ExtractedBody body = read_extracted_body(extract);
+  scene.body_vertices = std::move(body.vertices);
+  scene.body_triangles = std::move(body.triangles);
   return scene;
 }
 

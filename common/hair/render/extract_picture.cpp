@@ -58,8 +58,7 @@ cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
   h5::require_schema(file, kExtractSchema);
   StrandSet strands = h5::read_strand_set(file, "/strands");
   const auto& strand_group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
-  Points3f body_vertices = h5::read_matrix<float, 3>(file, "/body/vertices");
-  Triangles3i body_triangles = h5::read_matrix<int32_t, 3>(file, "/body/triangles");
+  ExtractedBody body = read_extracted_body(file);
 
   PointColours colours;
   const h5::EnumMembers* legend = nullptr;
@@ -86,7 +85,7 @@ cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
           category_colours());
       break;
   }
-  cv::Mat image = render_strands(strands, colours, body_vertices, body_triangles, options);
+  cv::Mat image = render_strands(strands, colours, body.vertices, body.triangles, options);
   if (legend) draw_legend(image, *legend);
   return image;
 }
@@ -107,9 +106,8 @@ cv::Mat types_picture(const h5::File& types, const h5::File& extract,
   static const std::vector<cv::Vec3b> type_colours = {
       {200, 110, 30}, {60, 170, 40}, {20, 140, 250}, {40, 40, 210}};
   PointColours colours = colours_by_table(strands, per_strand(type, strand_group), type_colours);
-  cv::Mat image =
-      render_strands(strands, colours, h5::read_matrix<float, 3>(extract, "/body/vertices"),
-                     h5::read_matrix<int32_t, 3>(extract, "/body/triangles"), options);
+  ExtractedBody body = read_extracted_body(extract);
+  cv::Mat image = render_strands(strands, colours, body.vertices, body.triangles, options);
   draw_legend(image, group_type_members(), type_colours);
   return image;
 }
@@ -132,9 +130,9 @@ cv::Mat style_picture(const h5::File& extract, const std::vector<int8_t>& group_
     int8_t style = group_style[group];
     strand_style.push_back(style >= 0 && style < none ? style : none);
   }
+  ExtractedBody body = read_extracted_body(extract);
   cv::Mat image = render_strands(strands, colours_by_table(strands, strand_style, style_colours),
-                                 h5::read_matrix<float, 3>(extract, "/body/vertices"),
-                                 h5::read_matrix<int32_t, 3>(extract, "/body/triangles"), options);
+                                 body.vertices, body.triangles, options);
   h5::EnumMembers legend;
   for (size_t code = 0; code < kStyleWords.size(); ++code)
     legend.push_back({std::string(kStyleWords[code]), static_cast<int8_t>(code)});

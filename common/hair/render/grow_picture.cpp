@@ -31,9 +31,7 @@ GrownColouring parse_grown_colouring(const std::string& word) {
 cv::Mat grown_picture(const h5::File& strands, const h5::File& extract,
                       const RenderOptions& options, GrownColouring colouring) {
   GrownStrands grown = read_grown_strands(strands);
-  h5::require_schema(extract, kExtractSchema);
-  Points3f body_vertices = h5::read_matrix<float, 3>(extract, "/body/vertices");
-  Triangles3i body_triangles = h5::read_matrix<int32_t, 3>(extract, "/body/triangles");
+  ExtractedBody body = read_extracted_body(extract);
   const StrandSet& set = grown.strands;
   PointColours colours;
   switch (colouring) {
@@ -55,7 +53,7 @@ cv::Mat grown_picture(const h5::File& strands, const h5::File& extract,
       break;
     }
   }
-  cv::Mat image = render_strands(set, colours, body_vertices, body_triangles, options);
+  cv::Mat image = render_strands(set, colours, body.vertices, body.triangles, options);
   std::string line = std::to_string(set.strand_count()) + " strands, " +
                      std::to_string(set.point_count()) + " points";
   if (colouring == GrownColouring::rule)

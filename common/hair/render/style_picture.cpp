@@ -30,7 +30,6 @@ cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5
                        const RenderOptions& options) {
   std::vector<int8_t> cluster_style = read_cluster_styles(styles);
   GrownStrands grown = read_grown_strands(strands);
-  h5::require_schema(extract, kExtractSchema);
   const StrandSet& set = grown.strands;
   const auto& point_cluster = std::get<std::vector<int32_t>>(set.point_attributes.at("cluster"));
   PointColours colours;
@@ -43,8 +42,8 @@ cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5
                                                 ": made from another model");
     colours.push_back(style_colour(cluster_style[static_cast<size_t>(cluster)]));
   }
-  cv::Mat image = render_strands(set, colours, h5::read_matrix<float, 3>(extract, "/body/vertices"),
-                                 h5::read_matrix<int32_t, 3>(extract, "/body/triangles"), options);
+  ExtractedBody body = read_extracted_body(extract);
+  cv::Mat image = render_strands(set, colours, body.vertices, body.triangles, options);
   // Legend: the four styles in their colours, with how many clusters have each.
   std::array<int, 4> count{};
   for (int8_t style : cluster_style)
