@@ -1,0 +1,285 @@
+#include "hair/strand_dynamics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+// LAPACK (Debian liblapack): Cholesky factorisation and solve of a symmetric positive
+// definite band matrix.
+extern "C" void dpbsv_(const char* uplo, const int* n, const int* kd, const int* nrhs, double* ab,
+                       const int* ldab, double* b, const int* ldb, int* info);
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Particles a spring reaches along the sequence: q_k to q_k+3, so 3 particles, and
+/// the band of the system holds 3 * 3 + 2 super-diagonals.
+constexpr int kParticleReach = 3;
+constexpr int kBandwidth = 3 * kParticleReach + 2;
+
+/// A spring as a linear form: length = direction . sum_i weight_i x_{particle_i}.
+struct LinearSpring {
+  std::array<int32_t, 4> particle{};
+  std::array<double, 4> weight{};
+  int count = 0;
+  Vec3 direction = Vec3::Zero();
+  double length_m = 0, rest_length_m = 0, stiffness = 0, damping = 0;
+};
+
+double mean_mass(const AltitudeStrand& strand, const LinearSpring& spring) {
+  double sum = 0;
+  for (int i = 0; i < spring.count; ++i)
+    sum += strand.mass_kg[static_cast<size_t>(spring.particle[static_cast<size_t>(i)])];
+  return sum / spring.count;
+}
+
+double stiffness_per_kg(const StrandMaterial& material, SpringKind kind) {
+  switch (kind) {
+    case SpringKind::edge:
+      return material.edge_stiffness_per_kg;
+    case SpringKind::bend:
+      return material.bend_stiffness_per_kg;
+    case SpringKind::torsion:
+      return material.torsion_stiffness_per_kg;
+  }
+  return 0;
+}
+
+/// Calls `visit(LinearSpring)` for every spring of the strand at `position_m`, anchors
+/// excluded; a spring of zero length (no direction) is left out.
+template <typename Visit>
+void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& material,
+                     const std::vector<Vec3>& position_m, Visit&& visit) {
+  LinearSpring linear;
+  linear.count = 2;
+  for (const TwoParticleSpring& spring : strand.springs) {
+    Vec3 span =
+        position_m[static_cast<size_t>(spring.b)] - position_m[static_cast<size_t>(spring.a)];
+    double length = span.norm();
+    if (!(length > 1e-12)) continue;
+    linear.particle[0] = spring.a;
+    linear.particle[1] = spring.b;
+    linear.weight[0] = -1;
+    linear.weight[1] = 1;
+    linear.direction = span / length;
+    linear.length_m = length;
+    linear.rest_length_m = spring.rest_length_m;
+    double mass = mean_mass(strand, linear);
+    double per_kg = stiffness_per_kg(material, spring.kind);
+    linear.stiffness = per_kg * mass;
+    linear.damping = 2 * material.damping_ratio * std::sqrt(per_kg) * mass;
+    visit(linear);
+  }
+  linear.count = 4;
+  for (const ChainTetrahedron& tetrahedron : strand.tetrahedra) {
+    std::array<Vec3, 4> corners;
+    for (size_t i = 0; i < 4; ++i)
+      corners[i] = position_m[static_cast<size_t>(tetrahedron.particle[i])];
+    Altitude best;
+    int best_which = -1;
+    for (int which = 0; which < 7; ++which) {
+      Altitude altitude = tetrahedron_altitude(corners, which);
+      if (altitude.robustness_m2 > best.robustness_m2) {
+        best = altitude;
+        best_which = which;
+      }
+    }
+    if (best_which < 0) continue;
+    linear.particle = tetrahedron.particle;
+    linear.weight = best.weight;
+    linear.direction = best.direction;
+    linear.length_m = best.length_m;
+    linear.rest_length_m = tetrahedron.rest_altitude_m[static_cast<size_t>(best_which)];
+    double mass = mean_mass(strand, linear);
+    linear.stiffness = material.altitude_stiffness_per_kg * mass;
+    linear.damping =
+        2 * material.damping_ratio * std::sqrt(material.altitude_stiffness_per_kg) * mass;
+    visit(linear);
+  }
+}
+
+}  // namespace
+
+double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Vec3>& position_m,
+                             const std::vector<StrandAnchor>& anchors) {
+  double energy = 0;
+  for_each_spring(strand, material, position_m, [&](const LinearSpring& spring) {
+    double stretch = spring.length_m - spring.rest_length_m;
+    energy += 0.5 * spring.stiffness * stretch * stretch;
+  });
+  double anchor_stiffness = material.anchor_stiffness_per_kg * strand.mass_kg[0];
+  for (const StrandAnchor& anchor : anchors) {
+    double stretch = (position_m[0] - anchor.position_m).norm() - anchor.rest_length_m;
+    energy += 0.5 * anchor_stiffness * stretch * stretch;
+  }
+  return energy;
+}
+
+double max_hair_strain(const AltitudeStrand& strand, const std::vector<Vec3>& position_m) {
+  double worst = 0;
+  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
+    auto k = static_cast<size_t>(i);
+    double length = (position_m[static_cast<size_t>(strand.hair_particle[k + 1])] -
+                     position_m[static_cast<size_t>(strand.hair_particle[k])])
+                        .norm();
+    double strain = length / strand.hair_segment_m[k] - 1;
+    if (std::abs(strain) > std::abs(worst)) worst = strain;
+  }
+  return worst;
+}
+
+void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& material,
+                         const std::vector<Vec3>& acceleration_m_s2,
+                         const Vec3& uniform_acceleration_m_s2,
+                         const std::vector<StrandAnchor>& anchors, double dt_s,
+                         StrandState& state) {
+  const int32_t first_free = strand.kinematic_count;
+  const int32_t count = strand.particle_count();
+  const int n = 3 * (count - first_free);
+  std::vector<Vec3>& x = state.position_m;
+  std::vector<Vec3>& v = state.velocity_m_s;
+  if (n > 0) {
+    const int ldab = kBandwidth + 1;
+    band_.assign(static_cast<size_t>(ldab) * static_cast<size_t>(n), 0.0);
+    rhs_.assign(static_cast<size_t>(n), 0.0);
+    // A(i, j), i <= j, lives at band_[kd + i - j + j * ldab].
+    auto add_block = [&](int32_t qa, int32_t qb, const Eigen::Matrix3d& block) {
+      int row0 = 3 * (qa - first_free), col0 = 3 * (qb - first_free);
+      for (int c = 0; c < 3; ++c) {
+        int j = col0 + c;
+        for (int r = 0; r < 3; ++r) {
+          int i = row0 + r;
+          if (i > j) continue;  // the lower triangle mirrors the upper
+          band_[static_cast<size_t>(kBandwidth + i - j + j * ldab)] += block(r, c);
+        }
+      }
+    };
+    auto add_rhs = [&](int32_t q, const Vec3& value) {
+      int row0 = 3 * (q - first_free);
+      for (int r = 0; r < 3; ++r) rhs_[static_cast<size_t>(row0 + r)] += value[r];
+    };
+
+    // Inertia, drag and the external forces.
+    for (int32_t q = first_free; q < count; ++q) {
+      auto k = static_cast<size_t>(q);
+      double mass = strand.mass_kg[k];
+      // External forces act on the hair; ghosts only carry inertia (weighed down, they
+      // would bend a hanging strand sideways).
+      Vec3 acceleration = Vec3::Zero();
+      if (!strand.is_ghost[k]) {
+        acceleration = uniform_acceleration_m_s2;
+        if (!acceleration_m_s2.empty()) acceleration += acceleration_m_s2[k];
+      }
+      add_block(q, q, (mass * (1 + dt_s * material.drag_per_s)) * Eigen::Matrix3d::Identity());
+      add_rhs(q, mass * v[k] + dt_s * mass * acceleration);
+    }
+
+    // Springs.
+    auto add_spring = [&](const LinearSpring& spring, const Vec3* known_velocity_sum) {
+      double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
+      Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
+      // Rate of the length from the known (kinematic) particles' velocities.
+      double known_rate = known_velocity_sum ? spring.direction.dot(*known_velocity_sum) : 0.0;
+      for (int a = 0; a < spring.count; ++a) {
+        int32_t qa = spring.particle[static_cast<size_t>(a)];
+        double wa = spring.weight[static_cast<size_t>(a)];
+        if (qa >= first_free) {
+          add_rhs(qa, (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m) * wa) *
+                          spring.direction);
+          if (known_rate != 0) add_rhs(qa, (-implicit * wa * known_rate) * spring.direction);
+        }
+        for (int b = a; b < spring.count; ++b) {
+          int32_t qb = spring.particle[static_cast<size_t>(b)];
+          if (qa < first_free || qb < first_free) continue;
+          double coefficient = implicit * wa * spring.weight[static_cast<size_t>(b)];
+          if (qa <= qb)
+            add_block(qa, qb, coefficient * outer);
+          else
+            add_block(qb, qa, coefficient * outer);
+        }
+      }
+    };
+    for_each_spring(strand, material, x, [&](const LinearSpring& spring) {
+      // Sum of weight * velocity over the spring's kinematic particles.
+      Vec3 known = Vec3::Zero();
+      bool any_known = false;
+      for (int a = 0; a < spring.count; ++a) {
+        int32_t qa = spring.particle[static_cast<size_t>(a)];
+        if (qa < first_free) {
+          known += spring.weight[static_cast<size_t>(a)] * v[static_cast<size_t>(qa)];
+          any_known = true;
+        }
+      }
+      add_spring(spring, any_known ? &known : nullptr);
+    });
+    if (first_free == 0) {
+      double mass = strand.mass_kg[0];
+      double stiffness = material.anchor_stiffness_per_kg * mass;
+      double damping =
+          2 * material.damping_ratio * std::sqrt(material.anchor_stiffness_per_kg) * mass;
+      LinearSpring linear;
+      linear.count = 1;  // the anchor's end is known
+      linear.particle[0] = 0;
+      linear.weight[0] = 1;
+      linear.stiffness = stiffness;
+      linear.damping = damping;
+      for (const StrandAnchor& anchor : anchors) {
+        Vec3 span = x[0] - anchor.position_m;
+        double length = span.norm();
+        if (!(length > 1e-12)) continue;
+        linear.direction = span / length;
+        linear.length_m = length;
+        linear.rest_length_m = anchor.rest_length_m;
+        Vec3 known = -anchor.velocity_m_s;
+        add_spring(linear, &known);
+      }
+    }
+
+    int kd = kBandwidth, nrhs = 1, info = 0;
+    dpbsv_("U", &n, &kd, &nrhs, band_.data(), &ldab, rhs_.data(), &n, &info);
+    if (info != 0)
+      throw std::runtime_error("strand step: band matrix not positive definite (LAPACK info " +
+                               std::to_string(info) + ")");
+    for (int32_t q = first_free; q < count; ++q) {
+      int row0 = 3 * (q - first_free);
+      v[static_cast<size_t>(q)] =
+          Vec3(rhs_[static_cast<size_t>(row0)], rhs_[static_cast<size_t>(row0 + 1)],
+               rhs_[static_cast<size_t>(row0 + 2)]);
+    }
+  }
+
+  // Positions, then strain limiting of the hair segments from the root out: a segment
+  // out of bounds is brought back by moving everything beyond it, so that the rest of
+  // the strand keeps its shape, and the ghosts beside it by half as much.
+  start_.assign(x.begin(), x.end());
+  const std::vector<Vec3>& start = start_;
+  for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
+  Vec3 shift = Vec3::Zero();
+  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
+    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
+    if (outer < first_free) continue;
+    Vec3 span = x[static_cast<size_t>(outer)] - x[static_cast<size_t>(inner)];
+    double length = span.norm();
+    double rest = strand.hair_segment_m[static_cast<size_t>(i)];
+    double limited =
+        std::clamp(length, rest * (1 - material.max_stretch), rest * (1 + material.max_stretch));
+    if (limited == length || !(length > 1e-12)) continue;
+    Vec3 correction = span * (limited / length - 1);
+    for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q)
+      x[static_cast<size_t>(q)] += 0.5 * correction;
+    x[static_cast<size_t>(outer)] += correction;
+    shift += correction;
+  }
+  for (int32_t q = first_free; q < count; ++q) {
+    auto k = static_cast<size_t>(q);
+    v[k] = (x[k] - start[k]) / dt_s;
+  }
+}
+
+}  // namespace hair

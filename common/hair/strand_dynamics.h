@@ -1,0 +1,84 @@
+#pragma once
+// Time integration of one altitude mass-spring strand (Selle, Lentine and Fedkiw 2008):
+// backward Euler with every spring linearised along its direction at the start of the
+// step, which makes the step one banded SPD solve per strand (LAPACK dpbsv) and stable
+// whatever the stiffness and the time step, then strain limiting of the hair segments.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "hair/altitude_strand.h"
+
+namespace hair {
+
+/// Spring stiffnesses per kilogram (k / m, in 1/s^2: the squared angular frequency of a
+/// particle on the spring), so that a strand behaves the same however finely it is
+/// sampled and whatever it weighs; each spring's stiffness is this times the mean mass
+/// of its particles.
+struct StrandMaterial {
+  double edge_stiffness_per_kg = 4e6;      ///< 1/s^2, stretch
+  double bend_stiffness_per_kg = 4e6;      ///< 1/s^2, springs q_k - q_k+2
+  double torsion_stiffness_per_kg = 2e6;   ///< 1/s^2, springs q_k - q_k+3
+  double altitude_stiffness_per_kg = 4e6;  ///< 1/s^2, one altitude per tetrahedron
+  double anchor_stiffness_per_kg = 4e5;    ///< 1/s^2, springs from a wisp to its anchors
+  double damping_ratio = 0.3;              ///< of each spring, a fraction of critical
+  double drag_per_s = 0.5;                 ///< air drag, velocity lost per second
+  double max_stretch = 0.01;               ///< hair segments kept within this strain
+};
+
+/// Positions and velocities of a strand's particles (its whole sequence, ghosts too).
+struct StrandState {
+  std::vector<Eigen::Vector3d> position_m;
+  std::vector<Eigen::Vector3d> velocity_m_s;
+};
+
+/// A spring from a point moved by the head (the end of a hair that leads into a braid)
+/// to particle 0 of a wisp's centre strand.
+struct StrandAnchor {
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();    ///< at the start of the step
+  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();  ///< over the step
+  double rest_length_m = 0;
+};
+
+/// The elastic energy of the strand's springs at `position_m`: sum of k (l - L)^2 / 2
+/// over two-particle springs, the altitude of each tetrahedron (the most robust one)
+/// and the anchors, joules.
+double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Eigen::Vector3d>& position_m,
+                             const std::vector<StrandAnchor>& anchors);
+
+/// Advances strands by one time step. Holds the band matrix between calls, so one per
+/// thread, reused, allocates nothing once warm.
+class StrandStepper {
+ public:
+  /// One step of dt_s. On entry `state` holds the positions at the start of the step and
+  /// the velocities; the kinematic particles' velocities must already be those that take
+  /// them where the head puts them at the end of the step. `acceleration_m_s2` is added to
+  /// every particle's (gravity, hair-hair repulsion; size particle_count(), or empty for
+  /// `uniform_acceleration_m_s2` alone). Each step:
+  ///   (M + dt sum_s (c_s + dt k_s) J_s^T J_s) v' = M v + dt f_ext - dt sum_s k_s (l_s - L_s) J_s^T
+  ///   x' = x + dt v'
+  /// where J_s is spring s's length as a linear form of the positions along its current
+  /// direction (two-particle springs, the altitude of each tetrahedron with the most
+  /// robust normal, the anchors) and c_s its damping. Then hair segments longer or
+  /// shorter than max_stretch allows are brought back, from the root out, moving the
+  /// particle farther from the root, and the velocities become (x' - x) / dt.
+  /// Throws std::runtime_error if the band matrix is not positive definite (it always is
+  /// for positive masses and time step).
+  void step(const AltitudeStrand& strand, const StrandMaterial& material,
+            const std::vector<Eigen::Vector3d>& acceleration_m_s2,
+            const Eigen::Vector3d& uniform_acceleration_m_s2,
+            const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state);
+
+ private:
+  std::vector<double> band_;  ///< LAPACK upper band storage, column-major
+  std::vector<double> rhs_;
+  std::vector<Eigen::Vector3d> start_;  ///< positions at the start of the step
+};
+
+/// Spring (the hair segment from hair particle i to i + 1) strain: |x_i+1 - x_i| / L_i - 1,
+/// the largest over the strand's hair segments in absolute value, signed.
+double max_hair_strain(const AltitudeStrand& strand,
+                       const std::vector<Eigen::Vector3d>& position_m);
+
+}  // namespace hair
