@@ -90,6 +90,26 @@ double tetrahedron_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
   return 6 * std::numbers::sqrt2 * volume / (rms * rms * rms);
 }
 
+int most_robust_altitude(const std::array<Vec3, 4>& x) {
+  int best = -1;
+  double best_size = 0;
+  for (int which = 0; which < 7; ++which) {
+    double size;
+    if (which < 4) {
+      const auto& face = kOppositeFace[static_cast<size_t>(which)];
+      size = (x[face[1]] - x[face[0]]).cross(x[face[2]] - x[face[0]]).squaredNorm();
+    } else {
+      const auto& pair = kEdgePair[static_cast<size_t>(which - 4)];
+      size = (x[pair[1]] - x[pair[0]]).cross(x[pair[3]] - x[pair[2]]).squaredNorm();
+    }
+    if (size > best_size) {
+      best_size = size;
+      best = which;
+    }
+  }
+  return best;
+}
+
 Altitude tetrahedron_altitude(const std::array<Vec3, 4>& x, int which) {
   Altitude altitude;
   if (which < 4) {

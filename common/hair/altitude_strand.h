@@ -96,6 +96,10 @@ struct Altitude {
   double robustness_m2 = 0;
 };
 
+/// Which of the seven altitudes of (x0, x1, x2, x3) has the largest robustness_m2: the
+/// one Selle et al. use. Cheaper than computing all seven with tetrahedron_altitude().
+int most_robust_altitude(const std::array<Eigen::Vector3d, 4>& x);
+
 /// Altitude `which` (0..6, as ChainTetrahedron::rest_altitude_m) of (x0, x1, x2, x3).
 /// Point-face altitudes weigh the face's corners by the barycentric coordinates of the
 /// point's projection, clamped into the face; edge-edge ones by the closest points' line

@@ -78,16 +78,9 @@ void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& materia
     std::array<Vec3, 4> corners;
     for (size_t i = 0; i < 4; ++i)
       corners[i] = position_m[static_cast<size_t>(tetrahedron.particle[i])];
-    Altitude best;
-    int best_which = -1;
-    for (int which = 0; which < 7; ++which) {
-      Altitude altitude = tetrahedron_altitude(corners, which);
-      if (altitude.robustness_m2 > best.robustness_m2) {
-        best = altitude;
-        best_which = which;
-      }
-    }
+    int best_which = most_robust_altitude(corners);
     if (best_which < 0) continue;
+    Altitude best = tetrahedron_altitude(corners, best_which);
     linear.particle = tetrahedron.particle;
     linear.weight = best.weight;
     linear.direction = best.direction;
@@ -135,8 +128,8 @@ double max_hair_strain(const AltitudeStrand& strand, const std::vector<Vec3>& po
 void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& material,
                          const std::vector<Vec3>& acceleration_m_s2,
                          const Vec3& uniform_acceleration_m_s2,
-                         const std::vector<StrandAnchor>& anchors, double dt_s,
-                         StrandState& state) {
+                         const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state,
+                         const StrandCollider* collider, double friction) {
   const int32_t first_free = strand.kinematic_count;
   const int32_t count = strand.particle_count();
   const int n = 3 * (count - first_free);
@@ -259,26 +252,51 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
   const std::vector<Vec3>& start = start_;
   for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
   Vec3 shift = Vec3::Zero();
+  contacts_.clear();
   for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
     int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
     int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
     for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
     if (outer < first_free) continue;
-    Vec3 span = x[static_cast<size_t>(outer)] - x[static_cast<size_t>(inner)];
-    double length = span.norm();
-    double rest = strand.hair_segment_m[static_cast<size_t>(i)];
-    double limited =
-        std::clamp(length, rest * (1 - material.max_stretch), rest * (1 + material.max_stretch));
-    if (limited == length || !(length > 1e-12)) continue;
-    Vec3 correction = span * (limited / length - 1);
+    const double rest = strand.hair_segment_m[static_cast<size_t>(i)];
+    const double shortest = rest * (1 - material.max_stretch);
+    const double longest = rest * (1 + material.max_stretch);
+    Vec3& tip_side = x[static_cast<size_t>(outer)];
+    const Vec3 before = tip_side;
+    // The segment's length, then the body, in turn: a push out of the body changes the
+    // length, so the two are alternated (three rounds) to a point outside at the length.
+    Contact contact{outer, Vec3::Zero(), Vec3::Zero(), 0};
+    bool touched = false;
+    for (int round = 0; round < (collider ? 3 : 1); ++round) {
+      Vec3 span = tip_side - x[static_cast<size_t>(inner)];
+      double length = span.norm();
+      double limited = std::clamp(length, shortest, longest);
+      if (limited != length && length > 1e-12) tip_side += span * (limited / length - 1);
+      if (!collider) break;
+      Vec3 moved = tip_side;
+      if (!collider->collide(moved, contact.normal, contact.surface_velocity_m_s)) break;
+      contact.moved_m += (moved - tip_side).norm();
+      tip_side = moved;
+      touched = true;
+    }
+    Vec3 correction = tip_side - before;
     for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q)
       x[static_cast<size_t>(q)] += 0.5 * correction;
-    x[static_cast<size_t>(outer)] += correction;
     shift += correction;
+    if (touched) contacts_.push_back(contact);
   }
   for (int32_t q = first_free; q < count; ++q) {
     auto k = static_cast<size_t>(q);
     v[k] = (x[k] - start[k]) / dt_s;
+  }
+  for (const Contact& contact : contacts_) {
+    Vec3& velocity = v[static_cast<size_t>(contact.particle)];
+    Vec3 relative = velocity - contact.surface_velocity_m_s;
+    relative -= relative.dot(contact.normal) * contact.normal;
+    double tangential = relative.norm();
+    double normal_speed = contact.moved_m / dt_s;
+    if (tangential > 0) relative *= std::max(0.0, 1 - friction * normal_speed / tangential);
+    velocity = contact.surface_velocity_m_s + relative;
   }
 }
 

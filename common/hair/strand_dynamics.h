@@ -47,6 +47,19 @@ double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial&
                              const std::vector<Eigen::Vector3d>& position_m,
                              const std::vector<StrandAnchor>& anchors);
 
+/// Keeps particles out of a body: called for each hair particle, root to tip, as the
+/// strand's segments are brought back to length, so that the rest of the strand follows
+/// a particle that a collision moved.
+class StrandCollider {
+ public:
+  virtual ~StrandCollider() = default;
+  /// Moves `position_m` out of the body if it is inside (or nearer than a clearance);
+  /// returns whether it did, with the outward unit normal and the velocity of the body's
+  /// surface there.
+  virtual bool collide(Eigen::Vector3d& position_m, Eigen::Vector3d& normal,
+                       Eigen::Vector3d& surface_velocity_m_s) const = 0;
+};
+
 /// Advances strands by one time step. Holds the band matrix between calls, so one per
 /// thread, reused, allocates nothing once warm.
 class StrandStepper {
@@ -62,18 +75,31 @@ class StrandStepper {
   /// direction (two-particle springs, the altitude of each tetrahedron with the most
   /// robust normal, the anchors) and c_s its damping. Then hair segments longer or
   /// shorter than max_stretch allows are brought back, from the root out, moving the
-  /// particle farther from the root, and the velocities become (x' - x) / dt.
+  /// particle farther from the root and everything beyond it, then each is moved out of
+  /// the body by `collider` (when given) before the next segment is limited, so the rest
+  /// of the strand follows it. The velocities become (x' - x) / dt; where a particle
+  /// touched the body, its velocity relative to the body's surface loses its normal part
+  /// and its tangential part is slowed by Coulomb friction (coefficient `friction`, the
+  /// normal speed being the distance the collision moved it over dt).
   /// Throws std::runtime_error if the band matrix is not positive definite (it always is
   /// for positive masses and time step).
   void step(const AltitudeStrand& strand, const StrandMaterial& material,
             const std::vector<Eigen::Vector3d>& acceleration_m_s2,
             const Eigen::Vector3d& uniform_acceleration_m_s2,
-            const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state);
+            const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state,
+            const StrandCollider* collider = nullptr, double friction = 0);
 
  private:
   std::vector<double> band_;  ///< LAPACK upper band storage, column-major
   std::vector<double> rhs_;
   std::vector<Eigen::Vector3d> start_;  ///< positions at the start of the step
+  /// Contacts of this step: particle, normal, surface velocity, distance moved.
+  struct Contact {
+    int32_t particle;
+    Eigen::Vector3d normal, surface_velocity_m_s;
+    double moved_m;
+  };
+  std::vector<Contact> contacts_;
 };
 
 /// Spring (the hair segment from hair particle i to i + 1) strain: |x_i+1 - x_i| / L_i - 1,

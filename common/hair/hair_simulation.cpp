@@ -1,0 +1,516 @@
+#include "hair/hair_simulation.h"
+
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "hair/body_sdf.h"
+#include "hair/error.h"
+#include "hair/hair_density_field.h"
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+Vec3 point_of(const StrandSet& strands, int64_t row) {
+  return strands.points.row(row).cast<double>().transpose();
+}
+
+/// The polyline `points` resampled to `segments` equal arcs, both ends kept.
+std::vector<Vec3> resample_polyline(const std::vector<Vec3>& points, int segments) {
+  std::vector<double> arc(points.size(), 0.0);
+  for (size_t i = 1; i < points.size(); ++i)
+    arc[i] = arc[i - 1] + (points[i] - points[i - 1]).norm();
+  std::vector<Vec3> resampled;
+  resampled.reserve(static_cast<size_t>(segments) + 1);
+  size_t segment = 0;
+  for (int k = 0; k <= segments; ++k) {
+    double target = arc.back() * k / segments;
+    while (segment + 2 < points.size() && arc[segment + 1] < target) ++segment;
+    double span = arc[segment + 1] - arc[segment];
+    double t = span > 0 ? std::clamp((target - arc[segment]) / span, 0.0, 1.0) : 0.0;
+    resampled.push_back((1 - t) * points[segment] + t * points[segment + 1]);
+  }
+  resampled.front() = points.front();
+  resampled.back() = points.back();
+  return resampled;
+}
+
+double polyline_length(const std::vector<Vec3>& points) {
+  double length = 0;
+  for (size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
+  return length;
+}
+
+int segments_for(double length_m, double spacing_m) {
+  return std::max(2, static_cast<int>(std::ceil(length_m / spacing_m - 1e-6)));
+}
+
+/// The orthonormal frame of a centre-strand tetrahedron: origin at its first corner, x
+/// along its first edge, y toward its third corner.
+Eigen::Matrix3d tetrahedron_frame(const Vec3& q0, const Vec3& q1, const Vec3& q2) {
+  Vec3 x = (q1 - q0).normalized();
+  Vec3 y = q2 - q0;
+  y = (y - y.dot(x) * x).normalized();
+  Eigen::Matrix3d frame;
+  frame.col(0) = x;
+  frame.col(1) = y;
+  frame.col(2) = x.cross(y);
+  return frame;
+}
+
+void check_params(const SimulationParams& p) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw Error::usage(what);
+  };
+  require(p.fps > 0 && std::isfinite(p.fps), "fps must be positive");
+  require(p.duration_s >= 0 && std::isfinite(p.duration_s), "duration_s must be 0 or positive");
+  require(p.substeps >= 1, "substeps must be at least 1");
+  require(p.guide_count >= 0, "guide_count must be 0 or more");
+  require(p.segment_length_h > 0, "segment_length_h must be positive");
+  require(p.short_segment_factor > 0 && p.wisp_segment_factor > 0,
+          "segment factors must be positive");
+  require(p.mass_per_length_kg_m > 0, "mass_per_length_kg_m must be positive");
+  require(p.body_voxel_h > 0 && p.body_clearance_h >= 0, "body field spacing must be positive");
+  require(p.density_cell_h > 0, "density_cell_h must be positive");
+}
+
+/// Moves `point_m` (in the body's rest frame, `distance_m` from the body) out to the
+/// clearance along the field's unit gradient, in at most three steps. Unlike
+/// BodySdf::push_out's Newton steps, each step is no longer than the distance still to
+/// go, so a weak gradient (at the edge of the field's band) cannot throw a point far.
+void push_out_of_body(const BodySdf& body, Vec3& point_m, double distance_m, double clearance_m) {
+  for (int step = 0; step < 3 && distance_m < clearance_m; ++step) {
+    Vec3 gradient = body.gradient(point_m);
+    double norm = gradient.norm();
+    if (!(norm > 1e-6)) return;  // deeper than the band: no direction to go
+    point_m += (clearance_m - distance_m + 0.01 * body.voxel_m()) * gradient / norm;
+    distance_m = body.distance(point_m);
+  }
+}
+
+/// The body moving with the head, as StrandStepper sees it: positions are taken into the
+/// body's rest frame at the end of the step, pushed out there, and brought back.
+class BodyCollider : public StrandCollider {
+ public:
+  BodyCollider(const BodySdf& body, const RigidTransform& start, const RigidTransform& end,
+               double clearance_m, double dt_s)
+      : body_(body), start_(start), end_(end), clearance_m_(clearance_m), dt_s_(dt_s) {}
+
+  bool collide(Vec3& position_m, Vec3& normal, Vec3& surface_velocity_m_s) const override {
+    Vec3 rest = end_.apply_inverse(position_m);
+    double distance = body_.distance(rest);
+    if (distance >= clearance_m_) return false;
+    deepest_m_ = std::max(deepest_m_, -distance);
+    push_out_of_body(body_, rest, distance, clearance_m_);
+    Vec3 gradient = body_.gradient(rest);
+    normal = gradient.norm() > 1e-6 ? end_.rotate(gradient.normalized()) : Vec3::Zero();
+    position_m = end_.apply(rest);
+    surface_velocity_m_s = (position_m - start_.apply(rest)) / dt_s_;
+    return true;
+  }
+  /// Deepest a particle was inside the body, metres (0 if none was).
+  double deepest_m() const { return deepest_m_; }
+
+ private:
+  const BodySdf& body_;
+  const RigidTransform& start_;
+  const RigidTransform& end_;
+  double clearance_m_, dt_s_;
+  mutable double deepest_m_ = 0;
+};
+
+/// One simulated strand during the run.
+struct RunningStrand {
+  AltitudeStrand model;
+  StrandState state;
+  std::vector<StrandAnchor> anchors;    ///< wisp centres
+  std::vector<Vec3> anchor_rest_m;      ///< the anchors at rest
+  std::vector<Vec3> acceleration_m_s2;  ///< repulsion, per particle
+  size_t first_output_point = 0;        ///< of this strand's hair particles in a frame
+  double penetration_m = 0;             ///< deepest in this frame
+  bool failed = false;
+};
+
+}  // namespace
+
+Vec3 head_pivot(const Points3f& body_vertices, double head_height_m) {
+  if (body_vertices.rows() == 0) return Vec3::Zero();
+  double top = body_vertices.col(1).maxCoeff();
+  Vec3 sum = Vec3::Zero();
+  int64_t count = 0;
+  for (Eigen::Index v = 0; v < body_vertices.rows(); ++v) {
+    if (body_vertices(v, 1) < top - head_height_m) continue;
+    sum += body_vertices.row(v).cast<double>().transpose();
+    ++count;
+  }
+  Vec3 centre = sum / static_cast<double>(count);
+  return Vec3(centre.x(), top - head_height_m, centre.z());
+}
+
+SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& motion,
+                               const SimulationParams& params) {
+  check_params(params);
+  auto setup_start = std::chrono::steady_clock::now();
+  const double h = scene.head_height_m;
+  const StrandSet& strands = scene.strands;
+  SimulationResult result;
+  result.fps = params.fps;
+  result.plan = plan_guides(strands, scene.cluster_style, params.guide_count);
+  const auto& point_cluster =
+      std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    int8_t style = scene.cluster_style[static_cast<size_t>(
+        point_cluster[static_cast<size_t>(strands.offsets[static_cast<size_t>(s)])])];
+    if (style == static_cast<int8_t>(HairStyle::fixed)) ++result.fixed_strands;
+  }
+
+  // The guides' strands.
+  std::vector<RunningStrand> running;
+  for (const GuideStrand& guide : result.plan.guides) {
+    int64_t begin = strands.offsets[static_cast<size_t>(guide.strand)] + guide.anchor_point;
+    int64_t end = strands.offsets[static_cast<size_t>(guide.strand) + 1];
+    std::vector<Vec3> polyline;
+    for (int64_t row = begin; row < end; ++row) polyline.push_back(point_of(strands, row));
+    double length = polyline_length(polyline);
+    if (!(length > 1e-4 * h)) continue;
+    double spacing = params.segment_length_h * h *
+                     (guide.style == HairStyle::short_hair ? params.short_segment_factor : 1.0);
+    SimulatedGuide simulated;
+    simulated.kind = GuideKind::strand;
+    simulated.strand = guide.strand;
+    simulated.anchor_point = guide.anchor_point;
+    simulated.cluster = guide.cluster;
+    simulated.style = guide.style;
+    simulated.rest_m = resample_polyline(polyline, segments_for(length, spacing));
+    RunningStrand strand;
+    strand.model = build_altitude_strand(simulated.rest_m, params.mass_per_length_kg_m);
+    simulated.ghost_count = strand.model.ghost_count();
+    result.guides.push_back(std::move(simulated));
+    running.push_back(std::move(strand));
+  }
+
+  // The wisps: a centre strand hung from its members' anchors; their points bound to it.
+  for (size_t w = 0; w < result.plan.wisps.size(); ++w) {
+    const WispPlan& wisp = result.plan.wisps[w];
+    std::vector<std::vector<Vec3>> runs;
+    double mean_length = 0;
+    for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
+      int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
+      std::vector<Vec3> run;
+      for (int64_t i = wisp.member_first_point[m]; i < wisp.member_end_point[m]; ++i)
+        run.push_back(point_of(strands, base + i));
+      mean_length += polyline_length(run);
+      runs.push_back(std::move(run));
+    }
+    mean_length /= static_cast<double>(runs.size());
+    if (!(mean_length > 1e-4 * h)) continue;
+    int segments =
+        segments_for(mean_length, params.segment_length_h * h * params.wisp_segment_factor);
+    std::vector<Vec3> centre(static_cast<size_t>(segments) + 1, Vec3::Zero());
+    int used = 0;
+    for (const auto& run : runs) {
+      if (!(polyline_length(run) > 0)) continue;
+      std::vector<Vec3> resampled = resample_polyline(run, segments);
+      for (size_t k = 0; k < centre.size(); ++k) centre[k] += resampled[k];
+      ++used;
+    }
+    for (Vec3& p : centre) p /= used;
+    bool degenerate = false;
+    for (size_t k = 1; k < centre.size(); ++k)
+      degenerate |= !((centre[k] - centre[k - 1]).norm() > 1e-9);
+    if (degenerate) {
+      spdlog::warn(
+          "{}: the wisp of braided cluster {} has a degenerate centre strand; its "
+          "strands move with the head",
+          scene.source, wisp.cluster);
+      continue;
+    }
+    auto count = static_cast<double>(wisp.member_strand.size());
+    SimulatedGuide simulated;
+    simulated.kind = GuideKind::wisp_centre;
+    simulated.cluster = wisp.cluster;
+    simulated.style = HairStyle::braided;
+    simulated.mass_scale = count;
+    simulated.rest_m = centre;
+    simulated.anchor_count = static_cast<int32_t>(wisp.anchor_m.size());
+    RunningStrand strand;
+    strand.model = build_altitude_strand(centre, params.mass_per_length_kg_m * count);
+    strand.model.kinematic_count = 0;  // it hangs from its anchors
+    simulated.ghost_count = strand.model.ghost_count();
+    for (const Vec3& anchor : wisp.anchor_m) {
+      StrandAnchor spring;
+      spring.rest_length_m = (centre.front() - anchor).norm();
+      strand.anchors.push_back(spring);
+      strand.anchor_rest_m.push_back(anchor);
+    }
+    if (wisp.loose_anchor_count > 0)
+      spdlog::info(
+          "{}: {} strands enter braided cluster {} from simulated hair; their ends are "
+          "moved with the head",
+          scene.source, wisp.loose_anchor_count, wisp.cluster);
+
+    // Bind every point of the members from the braid on to the nearest tetrahedron.
+    auto wisp_index = static_cast<int32_t>(result.wisp_guide.size());
+    result.wisp_guide.push_back(static_cast<int32_t>(result.guides.size()));
+    if (result.wisp_tetrahedron_offset.empty()) result.wisp_tetrahedron_offset.push_back(0);
+    const auto& rest = strand.model.rest_m;
+    std::vector<Vec3> centroid;
+    std::vector<Eigen::Matrix3d> frame;
+    for (const ChainTetrahedron& t : strand.model.tetrahedra) {
+      Vec3 sum = Vec3::Zero();
+      for (int32_t q : t.particle) sum += rest[static_cast<size_t>(q)];
+      centroid.push_back(sum / 4);
+      frame.push_back(tetrahedron_frame(rest[static_cast<size_t>(t.particle[0])],
+                                        rest[static_cast<size_t>(t.particle[1])],
+                                        rest[static_cast<size_t>(t.particle[2])]));
+    }
+    result.wisp_tetrahedron_offset.push_back(result.wisp_tetrahedron_offset.back() +
+                                             static_cast<int32_t>(centroid.size()));
+    for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
+      int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
+      int64_t end = strands.offsets[static_cast<size_t>(wisp.member_strand[m]) + 1];
+      for (int64_t row = base + wisp.member_first_point[m]; row < end; ++row) {
+        Vec3 p = point_of(strands, row);
+        size_t nearest = 0;
+        double best = std::numeric_limits<double>::infinity();
+        for (size_t t = 0; t < centroid.size(); ++t) {
+          double d = (centroid[t] - p).squaredNorm();
+          if (d < best) {
+            best = d;
+            nearest = t;
+          }
+        }
+        WispBinding binding;
+        binding.point = row;
+        binding.wisp = wisp_index;
+        binding.tetrahedron = static_cast<int32_t>(nearest);
+        const Vec3& origin =
+            rest[static_cast<size_t>(strand.model.tetrahedra[nearest].particle[0])];
+        binding.local_m = (frame[nearest].transpose() * (p - origin)).cast<float>();
+        result.wisp_bindings.push_back(binding);
+      }
+      ++result.braided_strands;
+    }
+    result.guides.push_back(std::move(simulated));
+    running.push_back(std::move(strand));
+  }
+  if (result.wisp_tetrahedron_offset.empty()) result.wisp_tetrahedron_offset.push_back(0);
+
+  // The body's signed distance field over the hair's reach at rest.
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  size_t hair_points = 0;
+  for (size_t g = 0; g < running.size(); ++g) {
+    running[g].first_output_point = hair_points;
+    hair_points += result.guides[g].rest_m.size();
+    for (const Vec3& p : running[g].model.rest_m) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+  }
+  std::optional<BodySdf> body;
+  const double clearance_m = params.body_clearance_h * h;
+  if (!running.empty()) {
+    Vec3 margin = Vec3::Constant(0.25 * h);
+    body.emplace(scene.body_vertices, scene.body_triangles, low - margin, high + margin,
+                 params.body_voxel_h * h, params.body_band_h * h, scene.source);
+  }
+  HairDensityField density(params.density_cell_h * h);
+  std::vector<Vec3> hair_positions;
+  auto gather_hair = [&] {
+    hair_positions.clear();
+    for (const RunningStrand& strand : running)
+      for (int32_t q : strand.model.hair_particle)
+        hair_positions.push_back(strand.state.position_m[static_cast<size_t>(q)]);
+  };
+
+  // Frames and time.
+  double duration_s = params.duration_s > 0 ? params.duration_s : motion.natural_duration_s();
+  result.frame_count = std::max(1, static_cast<int32_t>(std::lround(duration_s * params.fps)) + 1);
+  const double dt_s = 1.0 / (params.fps * params.substeps);
+  const Vec3 gravity(0, -params.gravity_m_s2, 0);
+  int32_t tetrahedra = result.wisp_tetrahedron_offset.back();
+  result.guide_points_m.assign(static_cast<size_t>(result.frame_count) * hair_points * 3, 0.0f);
+  result.wisp_frames.assign(
+      static_cast<size_t>(result.frame_count) * static_cast<size_t>(tetrahedra) * 7, 0.0f);
+
+  // Start: the rest shape where the head is at time 0, at rest.
+  RigidTransform head = motion.at(0);
+  for (RunningStrand& strand : running) {
+    for (const Vec3& p : strand.model.rest_m) strand.state.position_m.push_back(head.apply(p));
+    strand.state.velocity_m_s.assign(strand.model.rest_m.size(), Vec3::Zero());
+    strand.acceleration_m_s2.assign(strand.model.rest_m.size(), Vec3::Zero());
+  }
+  gather_hair();
+  density.build(hair_positions);
+  const double reference_density = density.mean_occupied_density();
+
+  auto record_frame = [&](int32_t frame, const RigidTransform& pose) {
+    result.head.push_back(pose);
+    size_t base = static_cast<size_t>(frame) * hair_points * 3;
+    for (const RunningStrand& strand : running) {
+      size_t row = strand.first_output_point;
+      for (int32_t q : strand.model.hair_particle) {
+        const Vec3& p = strand.state.position_m[static_cast<size_t>(q)];
+        for (int axis = 0; axis < 3; ++axis)
+          result.guide_points_m[base + 3 * row + static_cast<size_t>(axis)] =
+              static_cast<float>(p[axis]);
+        ++row;
+      }
+    }
+    size_t tet_base = static_cast<size_t>(frame) * static_cast<size_t>(tetrahedra) * 7;
+    for (size_t w = 0; w < result.wisp_guide.size(); ++w) {
+      const RunningStrand& strand = running[static_cast<size_t>(result.wisp_guide[w])];
+      const auto& x = strand.state.position_m;
+      for (size_t t = 0; t < strand.model.tetrahedra.size(); ++t) {
+        const auto& corner = strand.model.tetrahedra[t].particle;
+        Eigen::Matrix3d frame_axes =
+            tetrahedron_frame(x[static_cast<size_t>(corner[0])], x[static_cast<size_t>(corner[1])],
+                              x[static_cast<size_t>(corner[2])]);
+        Eigen::Quaterniond rotation(frame_axes);
+        rotation.normalize();
+        const Vec3& origin = x[static_cast<size_t>(corner[0])];
+        size_t at = tet_base + 7 * (static_cast<size_t>(result.wisp_tetrahedron_offset[w]) + t);
+        float values[7] = {static_cast<float>(origin.x()),   static_cast<float>(origin.y()),
+                           static_cast<float>(origin.z()),   static_cast<float>(rotation.w()),
+                           static_cast<float>(rotation.x()), static_cast<float>(rotation.y()),
+                           static_cast<float>(rotation.z())};
+        std::copy(values, values + 7, result.wisp_frames.begin() + static_cast<std::ptrdiff_t>(at));
+      }
+    }
+  };
+  auto frame_statistics = [&](double time_s, const RigidTransform& pose) {
+    FrameStatistics stats;
+    stats.time_s = time_s;
+    for (RunningStrand& strand : running) {
+      const auto& x = strand.state.position_m;
+      const auto& v = strand.state.velocity_m_s;
+      for (size_t k = 0; k < x.size(); ++k) {
+        stats.kinetic_energy_j += 0.5 * strand.model.mass_kg[k] * v[k].squaredNorm();
+      }
+      for (int32_t q : strand.model.hair_particle) {
+        auto k = static_cast<size_t>(q);
+        stats.gravity_energy_j += strand.model.mass_kg[k] * params.gravity_m_s2 *
+                                  (x[k].y() - pose.apply(strand.model.rest_m[k]).y());
+        stats.max_speed_m_s = std::max(stats.max_speed_m_s, v[k].norm());
+      }
+      stats.elastic_energy_j +=
+          strand_elastic_energy(strand.model, params.material, x, strand.anchors);
+      double strain = std::abs(max_hair_strain(strand.model, x));
+      stats.max_stretch = std::max(stats.max_stretch, strain);
+      stats.max_penetration_m = std::max(stats.max_penetration_m, strand.penetration_m);
+      strand.penetration_m = 0;
+    }
+    return stats;
+  };
+
+  record_frame(0, head);
+  result.statistics.push_back(frame_statistics(0, head));
+  result.setup_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
+  spdlog::info(
+      "{}: {} guides ({} ghost particles), {} wisps, {} frames of {} steps of {:.2f} ms",
+      scene.source, result.guides.size(),
+      [&] {
+        int64_t ghosts = 0;
+        for (const auto& g : result.guides) ghosts += g.ghost_count;
+        return ghosts;
+      }(),
+      result.wisp_guide.size(), result.frame_count, params.substeps, dt_s * 1e3);
+
+  auto simulation_start = std::chrono::steady_clock::now();
+  std::vector<StrandStepper> steppers(static_cast<size_t>(omp_get_max_threads()));
+  const bool still = motion.is_still();
+  int quiet_frames = 0;
+  RigidTransform previous = head;
+  for (int32_t frame = 1; frame < result.frame_count; ++frame) {
+    RigidTransform pose = motion.at(frame / params.fps);
+    if (result.settled_at_frame >= 0) {
+      record_frame(frame, pose);
+      FrameStatistics stats = result.statistics.back();
+      stats.time_s = frame / params.fps;
+      stats.integrated = false;
+      result.statistics.push_back(stats);
+      continue;
+    }
+    for (int step = 0; step < params.substeps; ++step) {
+      double t1 = (frame - 1) / params.fps + (step + 1) * dt_s;
+      RigidTransform next = step + 1 == params.substeps ? pose : motion.at(t1);
+      // Hair-hair repulsion from the density at the start of the step.
+      if (params.repulsion_m_s2 > 0) {
+        gather_hair();
+        density.build(hair_positions);
+      }
+#pragma omp parallel for schedule(dynamic, 4)
+      for (size_t g = 0; g < running.size(); ++g) {
+        RunningStrand& strand = running[g];
+        auto& x = strand.state.position_m;
+        auto& v = strand.state.velocity_m_s;
+        const AltitudeStrand& model = strand.model;
+        try {
+          for (int32_t q = 0; q < model.kinematic_count; ++q) {
+            auto k = static_cast<size_t>(q);
+            v[k] = (next.apply(model.rest_m[k]) - x[k]) / dt_s;
+          }
+          for (size_t a = 0; a < strand.anchors.size(); ++a) {
+            Vec3 from = previous.apply(strand.anchor_rest_m[a]);
+            strand.anchors[a].position_m = from;
+            strand.anchors[a].velocity_m_s = (next.apply(strand.anchor_rest_m[a]) - from) / dt_s;
+          }
+          if (params.repulsion_m_s2 > 0) {
+            for (int32_t q : model.hair_particle) {
+              auto k = static_cast<size_t>(q);
+              strand.acceleration_m_s2[k] =
+                  density.repulsion(x[k], params.repulsion_m_s2, reference_density);
+            }
+          }
+          BodyCollider collider(*body, previous, next, clearance_m, dt_s);
+          steppers[static_cast<size_t>(omp_get_thread_num())].step(
+              model, params.material, strand.acceleration_m_s2, gravity, strand.anchors, dt_s,
+              strand.state, params.body_collisions ? &collider : nullptr, params.friction);
+          strand.penetration_m = std::max(strand.penetration_m, collider.deepest_m());
+          for (int32_t q = 0; q < model.kinematic_count; ++q) {
+            auto k = static_cast<size_t>(q);
+            x[k] = next.apply(model.rest_m[k]);
+          }
+          for (size_t k = 0; k < x.size(); ++k)
+            if (!x[k].allFinite() || !v[k].allFinite()) strand.failed = true;
+        } catch (const std::exception&) {
+          strand.failed = true;
+        }
+      }
+      for (size_t g = 0; g < running.size(); ++g) {
+        if (running[g].failed)
+          throw Error::runtime(scene.source, "simulation: frame " + std::to_string(frame) +
+                                                 ", guide " + std::to_string(g) +
+                                                 ": a position or velocity is not finite");
+      }
+      previous = next;
+    }
+    record_frame(frame, pose);
+    FrameStatistics stats = frame_statistics(frame / params.fps, pose);
+    result.statistics.push_back(stats);
+    if (still) {
+      quiet_frames = stats.max_speed_m_s < params.settle_speed_h_s * h ? quiet_frames + 1 : 0;
+      if (quiet_frames >= params.settle_frames) {
+        result.settled_at_frame = frame + 1;
+        spdlog::info(
+            "{}: the head is still and the hair settled at frame {}; the remaining {} "
+            "frames repeat it",
+            scene.source, frame, result.frame_count - frame - 1);
+      }
+    }
+  }
+  if (result.settled_at_frame >= result.frame_count) result.settled_at_frame = -1;
+  result.simulation_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - simulation_start).count();
+  return result;
+}
+
+}  // namespace hair
