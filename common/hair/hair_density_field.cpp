@@ -1,6 +1,8 @@
 #include "hair/hair_density_field.h"
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 namespace hair {
 
@@ -9,12 +11,15 @@ using Vec3 = Eigen::Vector3d;
 void HairDensityField::build(const std::vector<Vec3>& points_m) {
   values_.clear();
   dims_.setZero();
-  if (points_m.empty()) return;
-  Vec3 low = points_m.front(), high = points_m.front();
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (const Vec3& p : points_m) {
+    if (!p.allFinite()) continue;
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
+  if (!(low.x() <= high.x())) return;
+  if (((high - low) / cell_m_).maxCoeff() > 4096)
+    throw std::runtime_error("hair density grid: the hair spans more than 4096 cells");
   // Two cells of margin, so that the gradient's samples near the edge read zeros.
   origin_m_ = low - Vec3::Constant(2 * cell_m_);
   for (int axis = 0; axis < 3; ++axis)
@@ -23,6 +28,7 @@ void HairDensityField::build(const std::vector<Vec3>& points_m) {
                      static_cast<size_t>(dims_.z()),
                  0.0);
   for (const Vec3& p : points_m) {
+    if (!p.allFinite()) continue;
     Vec3 u = (p - origin_m_) / cell_m_;
     int x = static_cast<int>(std::floor(u.x())), y = static_cast<int>(std::floor(u.y())),
         z = static_cast<int>(std::floor(u.z()));
@@ -63,16 +69,63 @@ double HairDensityField::density(const Vec3& point_m) const {
   return sum;
 }
 
-Vec3 HairDensityField::repulsion(const Vec3& point_m, double strength_m_s2,
-                                 double reference_density) const {
-  if (!(reference_density > 0) || strength_m_s2 == 0) return Vec3::Zero();
-  Vec3 gradient;  // per cell
+Vec3 HairDensityField::gradient_per_cell(const Vec3& point_m) const {
+  Vec3 gradient;
   for (int axis = 0; axis < 3; ++axis) {
     Vec3 step = Vec3::Zero();
     step[axis] = 0.5 * cell_m_;
     gradient[axis] = density(point_m + step) - density(point_m - step);
   }
-  return -strength_m_s2 * gradient / reference_density;
+  return gradient;
+}
+
+void HairDensityField::locate(const Vec3& point_m, Eigen::Vector3i& cell, Vec3& fraction) const {
+  Vec3 u = (point_m - origin_m_) / cell_m_;
+  for (int axis = 0; axis < 3; ++axis) {
+    cell[axis] = static_cast<int>(std::floor(u[axis]));
+    fraction[axis] = u[axis] - cell[axis];
+  }
+}
+
+double HairDensityField::self_density(const Vec3& point_m, const Vec3& self_m) const {
+  Eigen::Vector3i cell_p, cell_s;
+  Vec3 f_p, f_s;
+  locate(point_m, cell_p, f_p);
+  locate(self_m, cell_s, f_s);
+  // Corners shared by the two cells: per axis, the sample's corner offset d in {0, 1}
+  // matches the splat's offset d + cell_p - cell_s in {0, 1}.
+  double sum = 1;
+  for (int axis = 0; axis < 3; ++axis) {
+    double axis_sum = 0;
+    for (int d = 0; d < 2; ++d) {
+      int e = d + cell_p[axis] - cell_s[axis];
+      if (e < 0 || e > 1) continue;
+      double wp = d ? f_p[axis] : 1 - f_p[axis];
+      double ws = e ? f_s[axis] : 1 - f_s[axis];
+      axis_sum += wp * ws;
+    }
+    sum *= axis_sum;
+  }
+  return sum;
+}
+
+double HairDensityField::density_without(const Vec3& point_m, std::span<const Vec3> own_m) const {
+  if (values_.empty()) return 0;
+  double value = density(point_m);
+  for (const Vec3& own : own_m) value -= self_density(point_m, own);
+  return value;
+}
+
+Vec3 HairDensityField::gradient_per_cell_without(const Vec3& point_m,
+                                                 std::span<const Vec3> own_m) const {
+  Vec3 gradient;
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 step = Vec3::Zero();
+    step[axis] = 0.5 * cell_m_;
+    gradient[axis] =
+        density_without(point_m + step, own_m) - density_without(point_m - step, own_m);
+  }
+  return gradient;
 }
 
 double HairDensityField::mean_occupied_density() const {

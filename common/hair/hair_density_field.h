@@ -2,8 +2,10 @@
 // Hair-hair repulsion from a density grid (Muller, Kim and Chentanez 2012, "Fast
 // simulation of inextensible hair and fur", section 5): the hair particles are splatted
 // into a grid, and each is pushed down the gradient of the density, toward emptier space.
+// The simulation (hair_simulation.cpp) compares it with the density of the rest state.
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 namespace hair {
@@ -21,11 +23,18 @@ class HairDensityField {
   /// Density at `point_m`: trilinear, particles per cell; 0 outside the grid.
   double density(const Eigen::Vector3d& point_m) const;
 
-  /// Repulsion acceleration at `point_m`: -strength * cell * grad(density) / reference,
-  /// so that a density rising by `reference` over one cell pushes with `strength_m_s2`.
-  /// The gradient is a central difference over one cell.
-  Eigen::Vector3d repulsion(const Eigen::Vector3d& point_m, double strength_m_s2,
-                            double reference_density) const;
+  /// Gradient of density() by central differences over one cell, particles per cell per
+  /// cell (multiply by 1 / cell_m for per metre).
+  Eigen::Vector3d gradient_per_cell(const Eigen::Vector3d& point_m) const;
+
+  /// density() and gradient_per_cell() without the splats of the particles at `own_m` (a
+  /// particle and its neighbours along its strand must not push it: its own splat's
+  /// gradient at its position depends on where in its cell it is, and its neighbours move
+  /// with it; either would pump energy into a moving strand).
+  double density_without(const Eigen::Vector3d& point_m,
+                         std::span<const Eigen::Vector3d> own_m) const;
+  Eigen::Vector3d gradient_per_cell_without(const Eigen::Vector3d& point_m,
+                                            std::span<const Eigen::Vector3d> own_m) const;
 
   /// Mean density over the occupied cells (the reference a simulation keeps from its
   /// rest state); 0 for an empty grid.
@@ -33,6 +42,11 @@ class HairDensityField {
 
  private:
   double value(int x, int y, int z) const;
+  /// The cell holding `point_m` (its lower corner) and the fractions within it.
+  void locate(const Eigen::Vector3d& point_m, Eigen::Vector3i& cell,
+              Eigen::Vector3d& fraction) const;
+  /// The trilinear weight that a splat at `self_m` gives the density sampled at `point_m`.
+  double self_density(const Eigen::Vector3d& point_m, const Eigen::Vector3d& self_m) const;
 
   double cell_m_;
   Eigen::Vector3d origin_m_ = Eigen::Vector3d::Zero();

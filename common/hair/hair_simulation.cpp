@@ -134,6 +134,7 @@ struct RunningStrand {
   std::vector<Vec3> anchor_rest_m;      ///< the anchors at rest
   std::vector<Vec3> acceleration_m_s2;  ///< repulsion, per particle
   size_t first_output_point = 0;        ///< of this strand's hair particles in a frame
+  std::vector<Vec3> frame_start_m;      ///< positions at the start of the frame
   double penetration_m = 0;             ///< deepest in this frame
   bool failed = false;
 };
@@ -347,9 +348,40 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     strand.state.velocity_m_s.assign(strand.model.rest_m.size(), Vec3::Zero());
     strand.acceleration_m_s2.assign(strand.model.rest_m.size(), Vec3::Zero());
   }
-  gather_hair();
-  density.build(hair_positions);
-  const double reference_density = density.mean_occupied_density();
+  // The rest state's density, in the head's frame: repulsion pushes only where the hair
+  // is denser than it was at rest, by more than the mean density of an occupied cell
+  // (the head is empty at rest, and would draw hair in).
+  std::vector<Vec3> rest_positions;
+  for (const RunningStrand& strand : running)
+    for (int32_t q : strand.model.hair_particle)
+      rest_positions.push_back(strand.model.rest_m[static_cast<size_t>(q)]);
+  HairDensityField rest_density(params.density_cell_h * h);
+  rest_density.build(rest_positions);
+  const double reference_density = rest_density.mean_occupied_density();
+  // Repulsion on hair particle i of `strand`, from the other strands' hair.
+  auto repulsion = [&](const RunningStrand& strand, int32_t i, const RigidTransform& pose) -> Vec3 {
+    if (!(reference_density > 0)) return Vec3::Zero();
+    const AltitudeStrand& model = strand.model;
+    std::array<Vec3, 3> own, own_rest;
+    size_t count = 0;
+    for (int32_t j = std::max(0, i - 1); j <= std::min(model.hair_count() - 1, i + 1); ++j) {
+      auto q = static_cast<size_t>(model.hair_particle[static_cast<size_t>(j)]);
+      own[count] = strand.state.position_m[q];
+      own_rest[count++] = model.rest_m[q];
+    }
+    std::span<const Vec3> mine(own.data(), count), mine_at_rest(own_rest.data(), count);
+    const Vec3& position_m = own[static_cast<size_t>(i - std::max(0, i - 1))];
+    Vec3 rest_point = pose.apply_inverse(position_m);
+    double excess = density.density_without(position_m, mine) -
+                    rest_density.density_without(rest_point, mine_at_rest);
+    // A dead band of one typical cell's worth of hair, so that hair that has merely
+    // sagged a little is left alone, and the force faded in over the next.
+    if (!(excess > reference_density)) return Vec3::Zero();
+    Vec3 gradient = density.gradient_per_cell_without(position_m, mine) -
+                    pose.rotate(rest_density.gradient_per_cell_without(rest_point, mine_at_rest));
+    double fade = std::min(1.0, excess / reference_density - 1);
+    return -params.repulsion_m_s2 * fade * gradient / reference_density;
+  };
 
   auto record_frame = [&](int32_t frame, const RigidTransform& pose) {
     result.head.push_back(pose);
@@ -398,7 +430,9 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
         auto k = static_cast<size_t>(q);
         stats.gravity_energy_j += strand.model.mass_kg[k] * params.gravity_m_s2 *
                                   (x[k].y() - pose.apply(strand.model.rest_m[k]).y());
-        stats.max_speed_m_s = std::max(stats.max_speed_m_s, v[k].norm());
+        if (!strand.frame_start_m.empty())
+          stats.max_speed_m_s =
+              std::max(stats.max_speed_m_s, (x[k] - strand.frame_start_m[k]).norm() * params.fps);
       }
       stats.elastic_energy_j +=
           strand_elastic_energy(strand.model, params.material, x, strand.anchors);
@@ -439,10 +473,11 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       result.statistics.push_back(stats);
       continue;
     }
+    for (RunningStrand& strand : running) strand.frame_start_m = strand.state.position_m;
     for (int step = 0; step < params.substeps; ++step) {
       double t1 = (frame - 1) / params.fps + (step + 1) * dt_s;
       RigidTransform next = step + 1 == params.substeps ? pose : motion.at(t1);
-      // Hair-hair repulsion from the density at the start of the step.
+      // Hair-hair repulsion from the density at the start of the frame.
       if (params.repulsion_m_s2 > 0) {
         gather_hair();
         density.build(hair_positions);
@@ -464,11 +499,9 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
             strand.anchors[a].velocity_m_s = (next.apply(strand.anchor_rest_m[a]) - from) / dt_s;
           }
           if (params.repulsion_m_s2 > 0) {
-            for (int32_t q : model.hair_particle) {
-              auto k = static_cast<size_t>(q);
-              strand.acceleration_m_s2[k] =
-                  density.repulsion(x[k], params.repulsion_m_s2, reference_density);
-            }
+            for (int32_t i = 0; i < model.hair_count(); ++i)
+              strand.acceleration_m_s2[static_cast<size_t>(
+                  model.hair_particle[static_cast<size_t>(i)])] = repulsion(strand, i, previous);
           }
           BodyCollider collider(*body, previous, next, clearance_m, dt_s);
           steppers[static_cast<size_t>(omp_get_thread_num())].step(
@@ -479,17 +512,21 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
             auto k = static_cast<size_t>(q);
             x[k] = next.apply(model.rest_m[k]);
           }
+          // Not finite, or diverged so far that it soon will be.
+          const Vec3 centre = next.translation_m;
           for (size_t k = 0; k < x.size(); ++k)
-            if (!x[k].allFinite() || !v[k].allFinite()) strand.failed = true;
+            if (!x[k].allFinite() || !v[k].allFinite() || (x[k] - centre).norm() > 1000 * h)
+              strand.failed = true;
         } catch (const std::exception&) {
           strand.failed = true;
         }
       }
       for (size_t g = 0; g < running.size(); ++g) {
         if (running[g].failed)
-          throw Error::runtime(scene.source, "simulation: frame " + std::to_string(frame) +
-                                                 ", guide " + std::to_string(g) +
-                                                 ": a position or velocity is not finite");
+          throw Error::runtime(
+              scene.source,
+              "simulation: frame " + std::to_string(frame) + ", guide " + std::to_string(g) +
+                  ": a position or velocity is not finite (or diverged beyond 1000 H)");
       }
       previous = next;
     }

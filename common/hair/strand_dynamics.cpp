@@ -251,12 +251,19 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
   start_.assign(x.begin(), x.end());
   const std::vector<Vec3>& start = start_;
   for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
-  Vec3 shift = Vec3::Zero();
+  // What collisions moved each particle by (with what they moved the particles before
+  // it), which is not motion: left out of the velocities, or pushing a particle out of
+  // the body would fling the rest of the strand.
+  Vec3 shift = Vec3::Zero(), collision_shift = Vec3::Zero();
+  pushed_.assign(static_cast<size_t>(count), Vec3::Zero());
   contacts_.clear();
   for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
     int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
     int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
-    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
+    for (int32_t q = inner + 1; q <= outer; ++q) {
+      x[static_cast<size_t>(q)] += shift;
+      pushed_[static_cast<size_t>(q)] = collision_shift;
+    }
     if (outer < first_free) continue;
     const double rest = strand.hair_segment_m[static_cast<size_t>(i)];
     const double shortest = rest * (1 - material.max_stretch);
@@ -266,12 +273,14 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     // The segment's length, then the body, in turn: a push out of the body changes the
     // length, so the two are alternated (three rounds) to a point outside at the length.
     Contact contact{outer, Vec3::Zero(), Vec3::Zero(), 0};
+    Vec3 limited_alone = tip_side;  // where the first length limit put it
     bool touched = false;
     for (int round = 0; round < (collider ? 3 : 1); ++round) {
       Vec3 span = tip_side - x[static_cast<size_t>(inner)];
       double length = span.norm();
       double limited = std::clamp(length, shortest, longest);
       if (limited != length && length > 1e-12) tip_side += span * (limited / length - 1);
+      if (round == 0) limited_alone = tip_side;
       if (!collider) break;
       Vec3 moved = tip_side;
       if (!collider->collide(moved, contact.normal, contact.surface_velocity_m_s)) break;
@@ -280,17 +289,26 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
       touched = true;
     }
     Vec3 correction = tip_side - before;
-    for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q)
+    Vec3 pushed = touched ? Vec3(tip_side - limited_alone) : Vec3::Zero();
+    for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q) {
       x[static_cast<size_t>(q)] += 0.5 * correction;
+      pushed_[static_cast<size_t>(q)] += 0.5 * pushed;
+    }
+    pushed_[static_cast<size_t>(outer)] += pushed;
     shift += correction;
+    collision_shift += pushed;
     if (touched) contacts_.push_back(contact);
   }
   for (int32_t q = first_free; q < count; ++q) {
     auto k = static_cast<size_t>(q);
-    v[k] = (x[k] - start[k]) / dt_s;
+    v[k] = (x[k] - start[k] - pushed_[k]) / dt_s;
   }
   for (const Contact& contact : contacts_) {
-    Vec3& velocity = v[static_cast<size_t>(contact.particle)];
+    // A particle on the body moves as it actually did, along the surface: what it would
+    // have done against the body is gone.
+    auto k = static_cast<size_t>(contact.particle);
+    Vec3& velocity = v[k];
+    velocity = (x[k] - start[k]) / dt_s;
     Vec3 relative = velocity - contact.surface_velocity_m_s;
     relative -= relative.dot(contact.normal) * contact.normal;
     double tangential = relative.norm();

@@ -22,7 +22,7 @@ struct StrandMaterial {
   double altitude_stiffness_per_kg = 4e6;  ///< 1/s^2, one altitude per tetrahedron
   double anchor_stiffness_per_kg = 4e5;    ///< 1/s^2, springs from a wisp to its anchors
   double damping_ratio = 0.3;              ///< of each spring, a fraction of critical
-  double drag_per_s = 0.5;                 ///< air drag, velocity lost per second
+  double drag_per_s = 2.0;                 ///< air drag, velocity lost per second
   double max_stretch = 0.01;               ///< hair segments kept within this strain
 };
 
@@ -100,6 +100,7 @@ class StrandStepper {
     double moved_m;
   };
   std::vector<Contact> contacts_;
+  std::vector<Eigen::Vector3d> pushed_;  ///< displacement by collisions, per particle
 };
 
 /// Spring (the hair segment from hair particle i to i + 1) strain: |x_i+1 - x_i| / L_i - 1,

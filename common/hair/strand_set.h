@@ -21,8 +21,8 @@ using AttributeColumn = std::variant<std::vector<int32_t>, std::vector<float>, P
 /// never decreases and ends at points.rows(). Attributes are named columns with one
 /// entry per strand or per point.
 struct StrandSet {
-  Points3f points;                                       ///< #points x 3, metres
-  std::vector<int64_t> offsets{0};                       ///< #strands + 1
+  Points3f points;                                           ///< #points x 3, metres
+  std::vector<int64_t> offsets{0};                           ///< #strands + 1
   std::map<std::string, AttributeColumn> strand_attributes;  ///< each #strands long
   std::map<std::string, AttributeColumn> point_attributes;   ///< each #points long
 
