@@ -1,14 +1,12 @@
 #include "hair/strand_dynamics.h"
 
+#include "hair/banded_cholesky.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-// LAPACK (Debian liblapack): Cholesky factorisation and solve of a symmetric positive
-// definite band matrix.
-extern "C" void dpbsv_(const char* uplo, const int* n, const int* kd, const int* nrhs, double* ab,
-                       const int* ldab, double* b, const int* ldb, int* info);
 
 namespace hair {
 namespace {
@@ -232,10 +230,9 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
       }
     }
 
-    int kd = kBandwidth, nrhs = 1, info = 0;
-    dpbsv_("U", &n, &kd, &nrhs, band_.data(), &ldab, rhs_.data(), &n, &info);
+    int info = solve_banded_spd(band_, rhs_, n, kBandwidth);
     if (info != 0)
-      throw std::runtime_error("strand step: band matrix not positive definite (LAPACK info " +
+      throw std::runtime_error("strand step: band matrix not positive definite (minor " +
                                std::to_string(info) + ")");
     for (int32_t q = first_free; q < count; ++q) {
       int row0 = 3 * (q - first_free);

@@ -1,7 +1,7 @@
 #pragma once
 // Time integration of one altitude mass-spring strand (Selle, Lentine and Fedkiw 2008):
 // backward Euler with every spring linearised along its direction at the start of the
-// step, which makes the step one banded SPD solve per strand (LAPACK dpbsv) and stable
+// step, which makes the step one banded SPD solve per strand (banded_cholesky.h) and stable
 // whatever the stiffness and the time step, then strain limiting of the hair segments.
 
 #include <Eigen/Core>

@@ -1,0 +1,186 @@
+// simulate as a subprocess on the braid and ponytail samples after extract to classify:
+// a valid guides.h5 whose guides are those of the styles (the ponytail's tail hangs from
+// its fixed cap; the braid is a wisp); byte-identical reruns whatever the thread count;
+// keyframes from a CSV file; bad input (exit 2, one line, no output, an existing output
+// untouched).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hair/guides_io.h"
+#include "hair/h5/attribute.h"
+#include "hair/h5/dataset.h"
+#include "hair/h5/file.h"
+#include "hair/hair_style.h"
+#include "stage/clean_failures.h"
+#include "stage/sample_pipeline.h"
+#include "support/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using hair::test::kBin;
+using hair::test::kSamples;
+using hair::test::read_file_bytes;
+using hair::test::run_command;
+using hair::test::run_stage;
+using hair::test::SampleOutputs;
+using hair::test::TemporaryDirectory;
+using hair::test::text_lines;
+
+const fs::path kModel = fs::path(HAIR_SOURCE_DIR) / "models" / "style_extended.yml";
+
+class SimulateCli : public ::testing::Test {
+ protected:
+  static void TearDownTestSuite() { directory_.reset(); }
+  static const TemporaryDirectory& directory() {
+    if (!directory_) directory_ = std::make_unique<TemporaryDirectory>("simulate_cli");
+    return *directory_;
+  }
+  /// braid01 or ponytail01 up to styles.h5 (10,000 strands, as the style model was trained).
+  static SampleOutputs sample(const std::string& model) {
+    SampleOutputs out = hair::test::run_sample_pipeline(
+        directory() / model, kSamples / "hair" / (model + ".obj"), 10000);
+    fs::path styles = styles_of(out);
+    if (!fs::exists(styles))
+      run_stage("classify", {out.extract.string(), out.clusters.string(), out.strands.string(),
+                             "--model", kModel.string(), "-o", styles.string()});
+    return out;
+  }
+  static fs::path styles_of(const SampleOutputs& out) {
+    return out.strands.parent_path() / "styles.h5";
+  }
+  static std::vector<std::string> inputs(const SampleOutputs& out) {
+    return {out.extract.string(), out.strands.string(), styles_of(out).string(), "--duration_s",
+            "0.5"};
+  }
+  /// guides.h5 of a sample (half a second of the default shake), made on first use.
+  static fs::path guides(const SampleOutputs& out) {
+    fs::path path = out.strands.parent_path() / "guides.h5";
+    if (!fs::exists(path)) {
+      std::vector<std::string> arguments = inputs(out);
+      arguments.insert(arguments.end(), {"-o", path.string()});
+      run_stage("simulate", arguments);
+    }
+    return path;
+  }
+
+ private:
+  static std::unique_ptr<TemporaryDirectory> directory_;
+};
+std::unique_ptr<TemporaryDirectory> SimulateCli::directory_;
+
+/// Checks that `path` is a valid guides.h5 and returns its guides' styles and kinds.
+struct GuidesSummary {
+  int64_t frames = 0, strand_guides = 0, wisps = 0, bindings = 0, fixed_strands = 0;
+  std::vector<int8_t> guide_style;
+  std::vector<int64_t> anchor_point;
+};
+GuidesSummary summarise(const fs::path& path) {
+  auto inspect = run_command(kBin / "hair-inspect", {path.string()});
+  EXPECT_EQ(inspect.exit_code, 0) << inspect.out << inspect.err;
+  std::vector<std::string> report = text_lines(inspect.out);
+  EXPECT_FALSE(report.empty());
+  if (!report.empty()) {
+    EXPECT_EQ(report.back(), "valid: hairstyle.guides v1");
+  }
+  hair::h5::File file = hair::h5::File::open_read_only(path);
+  EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "simulate");
+  EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "motion"), "shake");
+  GuidesSummary summary;
+  summary.frames =
+      static_cast<int64_t>(hair::h5::read_vector<double>(file, "/frames/time_s").size());
+  std::vector<int8_t> kind =
+      hair::h5::read_enum_dataset(file, "/guides/kind", hair::guide_kind_members());
+  for (int8_t k : kind) (k == 0 ? summary.strand_guides : summary.wisps) += 1;
+  summary.guide_style = hair::h5::read_enum_values(file, "/guides/style");
+  summary.anchor_point = hair::h5::read_vector<int64_t>(file, "/guides/anchor_point");
+  summary.bindings =
+      static_cast<int64_t>(hair::h5::read_vector<int64_t>(file, "/wisps/binding_point").size());
+  summary.fixed_strands = hair::h5::read_int64_attribute(file, "/", "fixed_strand_count");
+  // Every frame finite.
+  for (float value : hair::h5::read_array<float>(file, "/frames/guide_points").values)
+    EXPECT_TRUE(std::isfinite(value));
+  return summary;
+}
+
+TEST_F(SimulateCli, ThePonytailsTailHangsFromItsFixedCap) {
+  GuidesSummary summary = summarise(guides(sample("ponytail01")));
+  EXPECT_EQ(summary.frames, 16);  // 0.5 s at 30 fps, and the rest state
+  EXPECT_EQ(summary.strand_guides, 169);
+  EXPECT_EQ(summary.wisps, 0);
+  EXPECT_GT(summary.fixed_strands, 0);  // the cap is not simulated
+  int64_t hanging = 0;
+  for (size_t g = 0; g < summary.guide_style.size(); ++g) {
+    EXPECT_NE(summary.guide_style[g], static_cast<int8_t>(hair::HairStyle::fixed));
+    hanging += summary.anchor_point[g] > 0;
+  }
+  EXPECT_GT(hanging, 0) << "no guide hangs from the fixed cap";
+}
+
+TEST_F(SimulateCli, TheBraidIsAWisp) {
+  GuidesSummary summary = summarise(guides(sample("braid01")));
+  EXPECT_GE(summary.wisps, 1);
+  EXPECT_GT(summary.bindings, 1000);
+  for (size_t g = 0; g < summary.guide_style.size(); ++g)
+    EXPECT_NE(summary.guide_style[g], static_cast<int8_t>(hair::HairStyle::fixed));
+}
+
+TEST_F(SimulateCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
+  const SampleOutputs ponytail = sample("ponytail01");
+  const std::string first = read_file_bytes(guides(ponytail));
+  for (const char* threads : {"1", "2"}) {
+    fs::path again = directory() / "again.h5";
+    std::vector<std::string> arguments = inputs(ponytail);
+    arguments.insert(arguments.end(), {"--threads", threads, "-o", again.string()});
+    run_stage("simulate", arguments);
+    EXPECT_TRUE(read_file_bytes(again) == first) << threads << " thread(s) wrote other bytes";
+    fs::remove(again);
+  }
+}
+
+TEST_F(SimulateCli, ReadsKeyframesFromACsvFile) {
+  const SampleOutputs braid = sample("braid01");
+  fs::path csv = directory() / "turn.csv";
+  hair::test::write_text_file(csv, "# a quarter turn and back\ntime_s,yaw_deg\n0,0\n0.5,90\n1,0\n");
+  fs::path out = directory() / "keyframes.h5";
+  run_stage("simulate", {braid.extract.string(), braid.strands.string(), styles_of(braid).string(),
+                         "--keyframes", csv.string(), "-o", out.string()});
+  hair::h5::File file = hair::h5::File::open_read_only(out);
+  EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "motion"), csv.string());
+  auto rotation = hair::h5::read_array<double>(file, "/frames/head_rotation");
+  ASSERT_EQ(rotation.shape[0], 31);  // the keyframes' second, at 30 fps
+  // Frame 15 (0.5 s): 90 degrees about +Y, w = cos 45.
+  EXPECT_NEAR(rotation.values[4 * 15], std::sqrt(0.5), 1e-6);
+  EXPECT_NEAR(rotation.values[4 * 15 + 2], std::sqrt(0.5), 1e-6);
+}
+
+TEST_F(SimulateCli, WrongInputsFailCleanly) {
+  const SampleOutputs braid = sample("braid01"), ponytail = sample("ponytail01");
+  const TemporaryDirectory& directory = SimulateCli::directory();
+  hair::test::write_text_file(directory / "text.h5", "not HDF5\n");
+  hair::test::write_text_file(directory / "bad.csv", "time_s,yaw_deg\n0,0\n0.5,abc\n");
+  const std::string extract = braid.extract.string(), strands = braid.strands.string(),
+                    styles = styles_of(braid).string();
+  const std::vector<hair::test::FailureCase> cases = {
+      {{(directory / "missing.h5").string(), strands, styles}, "missing.h5"},
+      {{(directory / "text.h5").string(), strands, styles}, "not an HDF5 file"},
+      {{strands, strands, styles}, "expected hairstyle.extract"},
+      {{extract, styles, styles}, "expected hairstyle.strands"},
+      {{extract, strands, strands}, "expected hairstyle.styles"},
+      {{extract, strands, styles_of(ponytail).string()}, "another model"},
+      {{extract, strands, styles, "--motion", "dance"}, "motion"},
+      {{extract, strands, styles, "--fps", "0"}, "fps"},
+      {{extract, strands, styles, "--substeps", "0"}, "substeps"},
+      {{extract, strands, styles, "--keyframes", (directory / "none.csv").string()}, "none.csv"},
+      {{extract, strands, styles, "--keyframes", (directory / "bad.csv").string()}, "line 3"},
+      {{extract, strands}, "STYLES_H5"},
+  };
+  hair::test::expect_clean_failures(kBin / "simulate", "simulate", cases, directory / "failures",
+                                    braid.strands);
+}
+
+}  // namespace
