@@ -88,6 +88,8 @@ void write_guides_file(h5::File& file, const SimulationResult& result, const Gui
 
   // Clusters.
   h5::write_enum_dataset(file, "/clusters/style", info.cluster_style, style_members());
+  h5::write_enum_dataset(file, "/clusters/simulated_style", result.simulated_style,
+                         style_members());
   h5::write_vector(file, "/clusters/candidate_count", result.plan.cluster_candidates);
   h5::write_vector(file, "/clusters/guide_count", result.plan.cluster_guides);
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "hair/body_sdf.h"
@@ -103,12 +104,19 @@ class BodyCollider : public StrandCollider {
                double clearance_m, double dt_s)
       : body_(body), start_(start), end_(end), clearance_m_(clearance_m), dt_s_(dt_s) {}
 
-  bool collide(Vec3& position_m, Vec3& normal, Vec3& surface_velocity_m_s) const override {
+  bool collide(Vec3& position_m, const Vec3& start_m, Vec3& normal,
+               Vec3& surface_velocity_m_s) const override {
     Vec3 rest = end_.apply_inverse(position_m);
     double distance = body_.distance(rest);
     if (distance >= clearance_m_) return false;
     deepest_m_ = std::max(deepest_m_, -distance);
     push_out_of_body(body_, rest, distance, clearance_m_);
+    if (body_.distance(rest) < 0) {
+      // Deeper than the field's band (no gradient to follow): back where it was on the
+      // body at the start of the step, which was outside.
+      Vec3 where_it_was = start_.apply_inverse(start_m);
+      if (body_.distance(where_it_was) > body_.distance(rest)) rest = where_it_was;
+    }
     Vec3 gradient = body_.gradient(rest);
     normal = gradient.norm() > 1e-6 ? end_.rotate(gradient.normalized()) : Vec3::Zero();
     position_m = end_.apply(rest);
@@ -125,6 +133,48 @@ class BodyCollider : public StrandCollider {
   double clearance_m_, dt_s_;
   mutable double deepest_m_ = 0;
 };
+
+/// The centre strand of a wisp at rest: its members' runs through the braid, each
+/// resampled to `segments` equal arcs, averaged point by point, and pushed out of the
+/// body to the clearance. Empty when the members' runs have no length, when two
+/// consecutive points coincide, or when a point stays inside the body (strands that wrap
+/// the head average to a line through it: not a bundle that one strand can stand for).
+std::vector<Vec3> wisp_centre(const StrandSet& strands, const WispPlan& wisp, int segments,
+                              const BodySdf& body, double clearance_m) {
+  std::vector<Vec3> centre(static_cast<size_t>(segments) + 1, Vec3::Zero());
+  int used = 0;
+  for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
+    int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
+    std::vector<Vec3> run;
+    for (int64_t i = wisp.member_first_point[m]; i < wisp.member_end_point[m]; ++i)
+      run.push_back(point_of(strands, base + i));
+    if (!(polyline_length(run) > 0)) continue;
+    std::vector<Vec3> resampled = resample_polyline(run, segments);
+    for (size_t k = 0; k < centre.size(); ++k) centre[k] += resampled[k];
+    ++used;
+  }
+  if (used == 0) return {};
+  for (Vec3& p : centre) {
+    p /= used;
+    double distance = body.distance(p);
+    if (distance < clearance_m) push_out_of_body(body, p, distance, clearance_m);
+    if (body.distance(p) < 0) return {};
+  }
+  for (size_t k = 1; k < centre.size(); ++k)
+    if (!((centre[k] - centre[k - 1]).norm() > 1e-9)) return {};
+  return centre;
+}
+
+/// Mean length of a wisp's members' runs through the braid.
+double mean_run_length(const StrandSet& strands, const WispPlan& wisp) {
+  double total = 0;
+  for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
+    int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
+    for (int64_t i = wisp.member_first_point[m] + 1; i < wisp.member_end_point[m]; ++i)
+      total += (point_of(strands, base + i) - point_of(strands, base + i - 1)).norm();
+  }
+  return wisp.member_strand.empty() ? 0.0 : total / static_cast<double>(wisp.member_strand.size());
+}
 
 /// One simulated strand during the run.
 struct RunningStrand {
@@ -163,7 +213,6 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   const StrandSet& strands = scene.strands;
   SimulationResult result;
   result.fps = params.fps;
-  result.plan = plan_guides(strands, scene.cluster_style, params.guide_count);
   const auto& point_cluster =
       std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
   for (int64_t s = 0; s < strands.strand_count(); ++s) {
@@ -171,6 +220,52 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
         point_cluster[static_cast<size_t>(strands.offsets[static_cast<size_t>(s)])])];
     if (style == static_cast<int8_t>(HairStyle::fixed)) ++result.fixed_strands;
   }
+
+  // The body's signed distance field over the hair to simulate at rest (with a margin
+  // for its swing), built only when there is some.
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (int64_t row = 0; row < strands.point_count(); ++row) {
+    int8_t style =
+        scene.cluster_style[static_cast<size_t>(point_cluster[static_cast<size_t>(row)])];
+    if (style < 0 || style == static_cast<int8_t>(HairStyle::fixed)) continue;
+    low = low.cwiseMin(point_of(strands, row));
+    high = high.cwiseMax(point_of(strands, row));
+  }
+  std::optional<BodySdf> body;
+  const double clearance_m = params.body_clearance_h * h;
+  if (low.x() <= high.x()) {
+    Vec3 margin = Vec3::Constant(0.25 * h);
+    body.emplace(scene.body_vertices, scene.body_triangles, low - margin, high + margin,
+                 params.body_voxel_h * h, params.body_band_h * h, scene.source);
+  }
+
+  // The plan, and each braided cluster's centre strand; a braided cluster whose centre
+  // strand cannot be had is simulated as normal hair.
+  result.simulated_style = scene.cluster_style;
+  result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
+  std::map<int32_t, std::vector<Vec3>> centres;
+  bool replan = false;
+  for (const WispPlan& wisp : result.plan.wisps) {
+    double length = mean_run_length(strands, wisp);
+    std::vector<Vec3> centre;
+    if (length > 1e-4 * h)
+      centre = wisp_centre(
+          strands, wisp,
+          segments_for(length, params.segment_length_h * h * params.wisp_segment_factor), *body,
+          clearance_m);
+    if (centre.empty()) {
+      spdlog::warn(
+          "{}: braided cluster {}: its {} strands do not gather into a bundle (their "
+          "mean runs inside the body); simulated as normal hair",
+          scene.source, wisp.cluster, wisp.member_strand.size());
+      result.simulated_style[static_cast<size_t>(wisp.cluster)] =
+          static_cast<int8_t>(HairStyle::normal);
+      replan = true;
+    } else {
+      centres[wisp.cluster] = std::move(centre);
+    }
+  }
+  if (replan) result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
 
   // The guides' strands.
   std::vector<RunningStrand> running;
@@ -200,39 +295,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   // The wisps: a centre strand hung from its members' anchors; their points bound to it.
   for (size_t w = 0; w < result.plan.wisps.size(); ++w) {
     const WispPlan& wisp = result.plan.wisps[w];
-    std::vector<std::vector<Vec3>> runs;
-    double mean_length = 0;
-    for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
-      int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
-      std::vector<Vec3> run;
-      for (int64_t i = wisp.member_first_point[m]; i < wisp.member_end_point[m]; ++i)
-        run.push_back(point_of(strands, base + i));
-      mean_length += polyline_length(run);
-      runs.push_back(std::move(run));
-    }
-    mean_length /= static_cast<double>(runs.size());
-    if (!(mean_length > 1e-4 * h)) continue;
-    int segments =
-        segments_for(mean_length, params.segment_length_h * h * params.wisp_segment_factor);
-    std::vector<Vec3> centre(static_cast<size_t>(segments) + 1, Vec3::Zero());
-    int used = 0;
-    for (const auto& run : runs) {
-      if (!(polyline_length(run) > 0)) continue;
-      std::vector<Vec3> resampled = resample_polyline(run, segments);
-      for (size_t k = 0; k < centre.size(); ++k) centre[k] += resampled[k];
-      ++used;
-    }
-    for (Vec3& p : centre) p /= used;
-    bool degenerate = false;
-    for (size_t k = 1; k < centre.size(); ++k)
-      degenerate |= !((centre[k] - centre[k - 1]).norm() > 1e-9);
-    if (degenerate) {
-      spdlog::warn(
-          "{}: the wisp of braided cluster {} has a degenerate centre strand; its "
-          "strands move with the head",
-          scene.source, wisp.cluster);
-      continue;
-    }
+    const std::vector<Vec3>& centre = centres.at(wisp.cluster);
     auto count = static_cast<double>(wisp.member_strand.size());
     SimulatedGuide simulated;
     simulated.kind = GuideKind::wisp_centre;
@@ -304,23 +367,10 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   }
   if (result.wisp_tetrahedron_offset.empty()) result.wisp_tetrahedron_offset.push_back(0);
 
-  // The body's signed distance field over the hair's reach at rest.
-  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
   size_t hair_points = 0;
   for (size_t g = 0; g < running.size(); ++g) {
     running[g].first_output_point = hair_points;
     hair_points += result.guides[g].rest_m.size();
-    for (const Vec3& p : running[g].model.rest_m) {
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-  }
-  std::optional<BodySdf> body;
-  const double clearance_m = params.body_clearance_h * h;
-  if (!running.empty()) {
-    Vec3 margin = Vec3::Constant(0.25 * h);
-    body.emplace(scene.body_vertices, scene.body_triangles, low - margin, high + margin,
-                 params.body_voxel_h * h, params.body_band_h * h, scene.source);
   }
   HairDensityField density(params.density_cell_h * h);
   std::vector<Vec3> hair_positions;
@@ -478,7 +528,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       double t1 = (frame - 1) / params.fps + (step + 1) * dt_s;
       RigidTransform next = step + 1 == params.substeps ? pose : motion.at(t1);
       // Hair-hair repulsion from the density at the start of the frame.
-      if (params.repulsion_m_s2 > 0) {
+      if (params.repulsion_m_s2 > 0 && step == 0) {
         gather_hair();
         density.build(hair_positions);
       }
@@ -498,7 +548,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
             strand.anchors[a].position_m = from;
             strand.anchors[a].velocity_m_s = (next.apply(strand.anchor_rest_m[a]) - from) / dt_s;
           }
-          if (params.repulsion_m_s2 > 0) {
+          if (params.repulsion_m_s2 > 0 && step == 0) {
             for (int32_t i = 0; i < model.hair_count(); ++i)
               strand.acceleration_m_s2[static_cast<size_t>(
                   model.hair_particle[static_cast<size_t>(i)])] = repulsion(strand, i, previous);

@@ -44,7 +44,7 @@ struct SimulationParams {
   double density_cell_h = 0.08;     ///< cell of the hair density grid
   /// A still head: integration stops once no hair particle has moved faster than this
   /// (H per second) for settle_frames frames in a row; later frames repeat the last.
-  double settle_speed_h_s = 0.01;
+  double settle_speed_h_s = 0.05;
   int settle_frames = 10;
 };
 
@@ -104,6 +104,9 @@ struct FrameStatistics {
 /// The simulation: guides, their positions per frame, the head, the wisps.
 struct SimulationResult {
   std::vector<SimulatedGuide> guides;
+  /// The style each cluster was simulated as: its style, but normal for a braided
+  /// cluster whose strands do not gather into a bundle (their mean runs inside the body).
+  std::vector<int8_t> simulated_style;
   GuidePlan plan;
   int32_t frame_count = 0;
   double fps = 0;

@@ -1,12 +1,11 @@
 #include "hair/strand_dynamics.h"
 
-#include "hair/banded_cholesky.h"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "hair/banded_cholesky.h"
 
 namespace hair {
 namespace {
@@ -242,76 +241,104 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     }
   }
 
-  // Positions, then strain limiting of the hair segments from the root out: a segment
-  // out of bounds is brought back by moving everything beyond it, so that the rest of
-  // the strand keeps its shape, and the ghosts beside it by half as much.
+  // Positions, then two passes over the hair segments from the root out.
+  //  1. Strain limiting: a segment out of bounds is brought back by moving everything
+  //     beyond it (so the rest of the strand keeps its shape), the ghosts beside it by
+  //     half as much. The velocities become (x' - x) / dt: inextensibility is motion.
+  //  2. The body: each hair particle is pushed out, its segment brought back to length
+  //     and the two alternated (three rounds), with Coulomb friction on its displacement
+  //     along the surface. These moves are geometry, not motion: they leave the
+  //     velocities alone, but for the particles that touched, whose velocity relative to
+  //     the surface loses its normal part. (Counted as motion, a push out of the body
+  //     flings the rest of the strand, and hair on the shoulders never comes to rest.)
   start_.assign(x.begin(), x.end());
   const std::vector<Vec3>& start = start_;
   for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
-  // What collisions moved each particle by (with what they moved the particles before
-  // it), which is not motion: left out of the velocities, or pushing a particle out of
-  // the body would fling the rest of the strand.
-  Vec3 shift = Vec3::Zero(), collision_shift = Vec3::Zero();
-  pushed_.assign(static_cast<size_t>(count), Vec3::Zero());
-  contacts_.clear();
+  auto limit = [&](int32_t i, Vec3& tip_side) {
+    Vec3 span = tip_side - x[static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i)])];
+    double length = span.norm();
+    double rest = strand.hair_segment_m[static_cast<size_t>(i)];
+    double limited =
+        std::clamp(length, rest * (1 - material.max_stretch), rest * (1 + material.max_stretch));
+    if (limited != length && length > 1e-12) tip_side += span * (limited / length - 1);
+  };
+  // Moves the particles after hair particle i's segment start by `shift`, and the ghosts
+  // within the segment by the share `correction` of its tip particle's move.
+  auto move_segment = [&](int32_t i, const Vec3& correction) {
+    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+    for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q)
+      x[static_cast<size_t>(q)] += 0.5 * correction;
+  };
+  Vec3 shift = Vec3::Zero();
   for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
     int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
     int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
-    for (int32_t q = inner + 1; q <= outer; ++q) {
-      x[static_cast<size_t>(q)] += shift;
-      pushed_[static_cast<size_t>(q)] = collision_shift;
-    }
+    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
     if (outer < first_free) continue;
-    const double rest = strand.hair_segment_m[static_cast<size_t>(i)];
-    const double shortest = rest * (1 - material.max_stretch);
-    const double longest = rest * (1 + material.max_stretch);
     Vec3& tip_side = x[static_cast<size_t>(outer)];
     const Vec3 before = tip_side;
-    // The segment's length, then the body, in turn: a push out of the body changes the
-    // length, so the two are alternated (three rounds) to a point outside at the length.
+    limit(i, tip_side);
+    move_segment(i, tip_side - before);
+    shift += tip_side - before;
+  }
+  for (int32_t q = first_free; q < count; ++q) {
+    auto k = static_cast<size_t>(q);
+    v[k] = (x[k] - start[k]) / dt_s;
+  }
+  if (!collider) return;
+
+  after_limits_.assign(x.begin(), x.end());
+  contacts_.clear();
+  shift = Vec3::Zero();
+  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
+    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
+    if (outer < first_free) continue;
+    Vec3& tip_side = x[static_cast<size_t>(outer)];
+    const Vec3 before = tip_side;
     Contact contact{outer, Vec3::Zero(), Vec3::Zero(), 0};
-    Vec3 limited_alone = tip_side;  // where the first length limit put it
     bool touched = false;
-    for (int round = 0; round < (collider ? 3 : 1); ++round) {
-      Vec3 span = tip_side - x[static_cast<size_t>(inner)];
-      double length = span.norm();
-      double limited = std::clamp(length, shortest, longest);
-      if (limited != length && length > 1e-12) tip_side += span * (limited / length - 1);
-      if (round == 0) limited_alone = tip_side;
-      if (!collider) break;
+    for (int round = 0; round < 3; ++round) {
+      if (round > 0) limit(i, tip_side);
       Vec3 moved = tip_side;
-      if (!collider->collide(moved, contact.normal, contact.surface_velocity_m_s)) break;
+      if (!collider->collide(moved, start[static_cast<size_t>(outer)], contact.normal,
+                             contact.surface_velocity_m_s))
+        break;
       contact.moved_m += (moved - tip_side).norm();
       tip_side = moved;
       touched = true;
     }
-    Vec3 correction = tip_side - before;
-    Vec3 pushed = touched ? Vec3(tip_side - limited_alone) : Vec3::Zero();
-    for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q) {
-      x[static_cast<size_t>(q)] += 0.5 * correction;
-      pushed_[static_cast<size_t>(q)] += 0.5 * pushed;
+    if (touched) {
+      // Friction on the step's displacement along the surface, relative to the body:
+      // held where it was under friction times the push, slowed by that otherwise.
+      Vec3 slide =
+          tip_side - start[static_cast<size_t>(outer)] - dt_s * contact.surface_velocity_m_s;
+      slide -= slide.dot(contact.normal) * contact.normal;
+      double length = slide.norm(), grip = friction * contact.moved_m;
+      tip_side -= length <= grip ? slide : Vec3(slide * (grip / length));
+      contacts_.push_back(contact);
     }
-    pushed_[static_cast<size_t>(outer)] += pushed;
-    shift += correction;
-    collision_shift += pushed;
-    if (touched) contacts_.push_back(contact);
+    move_segment(i, tip_side - before);
+    shift += tip_side - before;
   }
+  // A particle the body's moves held back (it, or the strand before it, touched) loses
+  // the part of its velocity they opposed: it is stopped, not thrown back.
   for (int32_t q = first_free; q < count; ++q) {
     auto k = static_cast<size_t>(q);
-    v[k] = (x[k] - start[k] - pushed_[k]) / dt_s;
+    Vec3 held = x[k] - after_limits_[k];
+    double norm = held.norm();
+    if (!(norm > 1e-12)) continue;
+    Vec3 direction = held / norm;
+    double against = v[k].dot(direction);
+    if (against < 0) v[k] -= against * direction;
   }
   for (const Contact& contact : contacts_) {
-    // A particle on the body moves as it actually did, along the surface: what it would
-    // have done against the body is gone.
     auto k = static_cast<size_t>(contact.particle);
-    Vec3& velocity = v[k];
-    velocity = (x[k] - start[k]) / dt_s;
-    Vec3 relative = velocity - contact.surface_velocity_m_s;
+    Vec3 relative = (x[k] - start[k]) / dt_s - contact.surface_velocity_m_s;
     relative -= relative.dot(contact.normal) * contact.normal;
-    double tangential = relative.norm();
-    double normal_speed = contact.moved_m / dt_s;
-    if (tangential > 0) relative *= std::max(0.0, 1 - friction * normal_speed / tangential);
-    velocity = contact.surface_velocity_m_s + relative;
+    v[k] = contact.surface_velocity_m_s + relative;
   }
 }
 

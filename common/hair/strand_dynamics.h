@@ -55,9 +55,10 @@ class StrandCollider {
   virtual ~StrandCollider() = default;
   /// Moves `position_m` out of the body if it is inside (or nearer than a clearance);
   /// returns whether it did, with the outward unit normal and the velocity of the body's
-  /// surface there.
-  virtual bool collide(Eigen::Vector3d& position_m, Eigen::Vector3d& normal,
-                       Eigen::Vector3d& surface_velocity_m_s) const = 0;
+  /// surface there. `start_m` is where the particle was at the start of the step (outside),
+  /// for a particle that went too deep to find its way out.
+  virtual bool collide(Eigen::Vector3d& position_m, const Eigen::Vector3d& start_m,
+                       Eigen::Vector3d& normal, Eigen::Vector3d& surface_velocity_m_s) const = 0;
 };
 
 /// Advances strands by one time step. Holds the band matrix between calls, so one per
@@ -75,12 +76,14 @@ class StrandStepper {
   /// direction (two-particle springs, the altitude of each tetrahedron with the most
   /// robust normal, the anchors) and c_s its damping. Then hair segments longer or
   /// shorter than max_stretch allows are brought back, from the root out, moving the
-  /// particle farther from the root and everything beyond it, then each is moved out of
-  /// the body by `collider` (when given) before the next segment is limited, so the rest
-  /// of the strand follows it. The velocities become (x' - x) / dt; where a particle
-  /// touched the body, its velocity relative to the body's surface loses its normal part
-  /// and its tangential part is slowed by Coulomb friction (coefficient `friction`, the
-  /// normal speed being the distance the collision moved it over dt).
+  /// particle farther from the root and everything beyond it, and the velocities become
+  /// (x' - x) / dt. Then, with `collider`, each hair particle is pushed out of the body,
+  /// alternating with its segment's length limit, and keeps its step's displacement along
+  /// the surface (relative to the body) only beyond `friction` times the push, less that
+  /// (Coulomb friction on positions, so hair lying on the body comes to rest); the rest
+  /// of the strand follows. These moves add no velocity: a particle they moved loses the
+  /// part of its velocity against the move, and one that touched the body the normal part
+  /// of its velocity relative to the surface.
   /// Throws std::runtime_error if the band matrix is not positive definite (it always is
   /// for positive masses and time step).
   void step(const AltitudeStrand& strand, const StrandMaterial& material,
@@ -92,7 +95,8 @@ class StrandStepper {
  private:
   std::vector<double> band_;  ///< LAPACK upper band storage, column-major
   std::vector<double> rhs_;
-  std::vector<Eigen::Vector3d> start_;  ///< positions at the start of the step
+  std::vector<Eigen::Vector3d> start_;         ///< positions at the start of the step
+  std::vector<Eigen::Vector3d> after_limits_;  ///< positions after the strain limiting
   /// Contacts of this step: particle, normal, surface velocity, distance moved.
   struct Contact {
     int32_t particle;
@@ -100,7 +104,6 @@ class StrandStepper {
     double moved_m;
   };
   std::vector<Contact> contacts_;
-  std::vector<Eigen::Vector3d> pushed_;  ///< displacement by collisions, per particle
 };
 
 /// Spring (the hair segment from hair particle i to i + 1) strain: |x_i+1 - x_i| / L_i - 1,
