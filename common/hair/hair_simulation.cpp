@@ -412,6 +412,11 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   auto repulsion = [&](const RunningStrand& strand, int32_t i, const RigidTransform& pose) -> Vec3 {
     if (!(reference_density > 0)) return Vec3::Zero();
     const AltitudeStrand& model = strand.model;
+    // The excess cannot pass the dead band where the density, own splats included, is
+    // under it: most particles stop here.
+    const Vec3& here =
+        strand.state.position_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
+    if (!(density.density(here) > reference_density)) return Vec3::Zero();
     std::array<Vec3, 3> own, own_rest;
     size_t count = 0;
     for (int32_t j = std::max(0, i - 1); j <= std::min(model.hair_count() - 1, i + 1); ++j) {

@@ -137,15 +137,16 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     band_.assign(static_cast<size_t>(ldab) * static_cast<size_t>(n), 0.0);
     rhs_.assign(static_cast<size_t>(n), 0.0);
     // A(i, j), i <= j, lives at band_[kd + i - j + j * ldab].
-    auto add_block = [&](int32_t qa, int32_t qb, const Eigen::Matrix3d& block) {
+    // Adds scale * d d^T to the block (qa, qb), qa <= qb: the whole block lies in the
+    // upper triangle when qa < qb, its upper half when qa == qb.
+    auto add_outer = [&](int32_t qa, int32_t qb, double scale, const Vec3& d) {
       int row0 = 3 * (qa - first_free), col0 = 3 * (qb - first_free);
       for (int c = 0; c < 3; ++c) {
         int j = col0 + c;
-        for (int r = 0; r < 3; ++r) {
-          int i = row0 + r;
-          if (i > j) continue;  // the lower triangle mirrors the upper
-          band_[static_cast<size_t>(kBandwidth + i - j + j * ldab)] += block(r, c);
-        }
+        double* column = band_.data() + kBandwidth - j + static_cast<ptrdiff_t>(j) * ldab;
+        double column_scale = scale * d[c];
+        int rows = qa == qb ? c + 1 : 3;
+        for (int r = 0; r < rows; ++r) column[row0 + r] += column_scale * d[r];
       }
     };
     auto add_rhs = [&](int32_t q, const Vec3& value) {
@@ -164,14 +165,17 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
         acceleration = uniform_acceleration_m_s2;
         if (!acceleration_m_s2.empty()) acceleration += acceleration_m_s2[k];
       }
-      add_block(q, q, (mass * (1 + dt_s * material.drag_per_s)) * Eigen::Matrix3d::Identity());
+      double diagonal = mass * (1 + dt_s * material.drag_per_s);
+      for (int r = 0; r < 3; ++r) {
+        int i = 3 * (q - first_free) + r;
+        band_[static_cast<size_t>(kBandwidth + i * ldab)] += diagonal;
+      }
       add_rhs(q, mass * v[k] + dt_s * mass * acceleration);
     }
 
     // Springs.
     auto add_spring = [&](const LinearSpring& spring, const Vec3* known_velocity_sum) {
       double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
-      Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
       // Rate of the length from the known (kinematic) particles' velocities.
       double known_rate = known_velocity_sum ? spring.direction.dot(*known_velocity_sum) : 0.0;
       for (int a = 0; a < spring.count; ++a) {
@@ -187,9 +191,9 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
           if (qa < first_free || qb < first_free) continue;
           double coefficient = implicit * wa * spring.weight[static_cast<size_t>(b)];
           if (qa <= qb)
-            add_block(qa, qb, coefficient * outer);
+            add_outer(qa, qb, coefficient, spring.direction);
           else
-            add_block(qb, qa, coefficient * outer);
+            add_outer(qb, qa, coefficient, spring.direction);
         }
       }
     };
