@@ -3,8 +3,8 @@
 // --extract, the same strands coloured by the group types of types.h5, the middle
 // clusters of middle.h5 or the hair clusters of clusters.h5, or by hand-labelled styles
 // (--style-labels, data/labels); the grown strands of strands.h5, or, with --strands,
-// in the paper's colours of the styles of styles.h5. The file's `schema` attribute says
-// which it is.
+// in the paper's colours of the styles of styles.h5; a contact sheet of frames of the
+// simulated guides of guides.h5. The file's `schema` attribute says which it is.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
@@ -13,6 +13,7 @@
 #include "hair/error.h"
 #include "hair/extract_io.h"
 #include "hair/grow_io.h"
+#include "hair/guides_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
@@ -20,6 +21,7 @@
 #include "hair/render/cluster_picture.h"
 #include "hair/render/extract_picture.h"
 #include "hair/render/grow_picture.h"
+#include "hair/render/guides_picture.h"
 #include "hair/render/style_picture.h"
 #include "hair/style_io.h"
 #include "hair/style_labels.h"
@@ -28,13 +30,16 @@
 namespace {
 
 /// The picture of `file` by the schema it names; an empty `colouring` is the file's
-/// default, an empty title in `options` names the file and the colouring.
+/// default, an empty title in `options` names the file and the colouring; `panels` is
+/// for guides.h5 only (0: not given).
 cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
-                const std::string& strands_path, const std::string& colouring,
+                const std::string& strands_path, const std::string& colouring, int panels,
                 hair::RenderOptions options) {
   if (!hair::h5::has_attribute(file, "/", "schema"))
     throw hair::Error::bad_input(file.name(), "has no schema attribute: not a hairstyle file");
   std::string schema = hair::h5::read_string_attribute(file, "/", "schema");
+  if (panels != 0 && schema != hair::kGuidesSchema)
+    throw hair::Error::usage("--panels is for guides.h5, not " + file.name() + " (" + schema + ")");
   // The colouring asked for or `fallback`, named in the default title.
   auto colour_word = [&](const std::string& fallback) {
     std::string word = colouring.empty() ? fallback : colouring;
@@ -43,17 +48,20 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
   };
   if (schema == hair::kExtractSchema) {
     if (!extract_path.empty())
-      throw hair::Error::usage("--extract is for types.h5, middle.h5 and clusters.h5, not " +
-                               file.name() + " (" + schema + ")");
+      throw hair::Error::usage(
+          "--extract is for types.h5, middle.h5, clusters.h5, strands.h5, styles.h5 and "
+          "guides.h5, not " +
+          file.name() + " (" + schema + ")");
     hair::ExtractColouring how = hair::parse_extract_colouring(colour_word("group"));
     return hair::extract_picture(file, how, options);
   }
   if (schema != hair::kTypesSchema && schema != hair::kMiddleSchema &&
       schema != hair::kClustersSchema && schema != hair::kStrandsSchema &&
-      schema != hair::kStylesSchema)
-    throw hair::Error::bad_input(file.name(), "schema '" + schema +
-                                                  "' is not one hair-render draws (extract, "
-                                                  "types, middle, clusters, strands or styles)");
+      schema != hair::kStylesSchema && schema != hair::kGuidesSchema)
+    throw hair::Error::bad_input(file.name(),
+                                 "schema '" + schema +
+                                     "' is not one hair-render draws (extract, types, middle, "
+                                     "clusters, strands, styles or guides)");
   if (!strands_path.empty() != (schema == hair::kStylesSchema))
     throw hair::Error::usage(schema == hair::kStylesSchema
                                  ? file.name() +
@@ -66,6 +74,12 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
     throw hair::Error::usage("--color-by is for extract.h5, clusters.h5 and strands.h5, not " +
                              file.name() + " (" + schema + ")");
   hair::h5::File extract = hair::h5::File::open_read_only(extract_path);
+  if (schema == hair::kGuidesSchema) {
+    // A panel per frame: the front and side views show turns, nods and walks.
+    options.views = {hair::ViewDirection::front, hair::ViewDirection::side};
+    if (options.title.empty()) options.title = file.name();
+    return hair::guides_picture(file, extract, options, panels == 0 ? 6 : panels);
+  }
   if (schema == hair::kStylesSchema) {
     colour_word("style");
     return hair::styles_picture(file, hair::h5::File::open_read_only(strands_path), extract,
@@ -115,15 +129,15 @@ int main(int argc, char** argv) {
                "hair-render");
   std::string input_path, output_path, colouring, title, extract_path, strands_path, labels_path,
       model;
-  int size_px = 512;
+  int size_px = 512, panels = 0;
   bool no_body = false;
   app.add_option("FILE", input_path,
-                 "extract.h5; or, with --extract, types.h5, middle.h5, clusters.h5 or strands.h5; "
-                 "or, with --extract and --strands, styles.h5")
+                 "extract.h5; or, with --extract, types.h5, middle.h5, clusters.h5, strands.h5 or "
+                 "guides.h5; or, with --extract and --strands, styles.h5")
       ->required();
   app.add_option("--extract", extract_path,
-                 "the extract.h5 that types.h5, middle.h5, clusters.h5 or strands.h5 was made "
-                 "from");
+                 "the extract.h5 that types.h5, middle.h5, clusters.h5, strands.h5 or guides.h5 "
+                 "was made from");
   app.add_option("--strands", strands_path,
                  "the strands.h5 that styles.h5 classified (its strands are drawn in the paper's "
                  "colours of their clusters' styles)");
@@ -143,6 +157,11 @@ int main(int argc, char** argv) {
           ->needs(labels_option);
   labels_option->needs(model_option)->excludes("--color-by")->excludes("--extract");
   app.add_option("--size", size_px, "pixels per view")->check(CLI::Range(64, 4096));
+  app.add_option("--panels", panels,
+                 "guides.h5: frames shown, spread evenly from the first to the last, each a "
+                 "front and a side view (default 6; two rows if more than 4)")
+      ->check(CLI::Range(2, 16))
+      ->excludes(labels_option);
   app.add_option("--title", title, "text at the top left (default: the file and colouring)");
   app.add_flag("--no-body", no_body, "do not draw the body (it still hides what is behind it)");
   try {
@@ -161,7 +180,8 @@ int main(int argc, char** argv) {
     if (!labels_path.empty()) {
       hair::write_png(style_label_picture(file, labels_path, model, options), output_path);
     } else {
-      hair::write_png(picture(file, extract_path, strands_path, colouring, options), output_path);
+      hair::write_png(picture(file, extract_path, strands_path, colouring, panels, options),
+                      output_path);
     }
   } catch (const hair::Error& e) {
     std::cerr << "hair-render: error: " << e.what() << "\n";

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <tuple>
 
 #include "hair/error.h"
 
@@ -103,12 +104,17 @@ void draw_body(const Points3f& vertices, const Triangles3i& triangles, const Pro
 
 cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
                        const Points3f& body_vertices, const Triangles3i& body_triangles,
-                       const RenderOptions& options) {
+                       const RenderOptions& options, const StrandWidths& widths) {
+  if (!widths.empty() && static_cast<int64_t>(widths.size()) != strands.strand_count())
+    throw Error::usage("render_strands: " + std::to_string(widths.size()) + " line widths for " +
+                       std::to_string(strands.strand_count()) + " strands");
   int size = options.view_size_px;
   cv::Mat canvas(size, size * static_cast<int>(options.views.size()), CV_8UC3,
                  cv::Scalar(255, 255, 255));
-  const Points3f& frame_points =
+  const Points3f& drawn_points =
       options.frame_on_strands && strands.point_count() > 0 ? strands.points : body_vertices;
+  const Points3f& frame_points =
+      options.frame_points.rows() > 0 ? options.frame_points : drawn_points;
   for (size_t view_index = 0; view_index < options.views.size(); ++view_index) {
     Projection projection = framing(frame_points, options.views[view_index], options);
     cv::Mat view = canvas(cv::Rect(static_cast<int>(view_index) * size, 0, size, size));
@@ -119,17 +125,28 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
     }
 
     // Strand segments far to near, each drawn unless the body is in front of it.
-    std::vector<std::pair<double, int64_t>> segments;
+    // Each segment: its depth, its first point and its strand.
+    struct Segment {
+      double z;
+      int64_t i, strand;
+      bool operator<(const Segment& other) const {
+        return std::tie(z, i) < std::tie(other.z, other.i);
+      }
+    };
+    std::vector<Segment> segments;
     std::vector<Eigen::Vector3d> screen(static_cast<size_t>(strands.point_count()));
     for (int64_t i = 0; i < strands.point_count(); ++i)
       screen[i] = projection(strands.points.row(i).cast<double>().transpose());
     for (int64_t s = 0; s < strands.strand_count(); ++s)
       for (int64_t i = strands.offsets[s]; i + 1 < strands.offsets[s + 1]; ++i)
-        segments.push_back({(screen[i].z() + screen[i + 1].z()) / 2, i});
+        segments.push_back({(screen[i].z() + screen[i + 1].z()) / 2, i, s});
     std::sort(segments.begin(), segments.end());
     constexpr double depth_tolerance_m = 0.004;  // hair lies on the body
-    int thickness = std::max(1, static_cast<int>(std::lround(options.line_width_px)));
-    for (auto [z, i] : segments) {
+    auto thickness_px = [](double width_px) {
+      return std::max(1, static_cast<int>(std::lround(width_px)));
+    };
+    const int thickness = thickness_px(options.line_width_px);
+    for (auto [z, i, strand] : segments) {
       Eigen::Vector3d middle = (screen[i] + screen[i + 1]) / 2;
       int px = static_cast<int>(middle.x()), py = static_cast<int>(middle.y());
       if (px >= 0 && py >= 0 && px < size && py < size &&
@@ -148,7 +165,8 @@ cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
                            static_cast<int>(std::lround(a.y() * 16))),
                  cv::Point(static_cast<int>(std::lround(b.x() * 16)),
                            static_cast<int>(std::lround(b.y() * 16))),
-                 cv::Scalar(blended[0], blended[1], blended[2]), thickness, cv::LINE_AA, 4);
+                 cv::Scalar(blended[0], blended[1], blended[2]),
+                 widths.empty() ? thickness : thickness_px(widths[strand]), cv::LINE_AA, 4);
       }
     }
   }

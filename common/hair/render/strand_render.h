@@ -21,7 +21,14 @@ struct RenderOptions {
   bool frame_on_strands = true;  ///< frame the views on the strands (else on the body)
   bool draw_body = true;         ///< draw the body (it still hides the strands behind it)
   std::string title;             ///< drawn at the top left, may be empty
+  /// When not empty, every view is framed on these points instead of the strands or the
+  /// body: e.g. the 8 corners of a box around every frame of an animation (exact, the
+  /// views being along the axes), so that pictures of its frames share one camera.
+  Points3f frame_points;
 };
+
+/// Line widths per strand (#strands, pixels); empty: RenderOptions::line_width_px for all.
+using StrandWidths = std::vector<double>;
 
 /// Per-point colours (#points, BGR 0-255) for a strand set.
 using PointColours = std::vector<cv::Vec3b>;
@@ -33,10 +40,11 @@ using PointColours = std::vector<cv::Vec3b>;
 /// @param colours          #points colours
 /// @param body_vertices    #V x 3 body positions (may have 0 rows)
 /// @param body_triangles   #T x 3 body triangles
+/// @param widths           #strands line widths, or empty for options.line_width_px
 /// @return a BGR image, #views * view_size_px wide
 cv::Mat render_strands(const StrandSet& strands, const PointColours& colours,
                        const Points3f& body_vertices, const Triangles3i& body_triangles,
-                       const RenderOptions& options);
+                       const RenderOptions& options, const StrandWidths& widths = {});
 
 /// A colour per strand, cycling through a palette of distinguishable hues keyed by
 /// `ids` (e.g. group or cluster ids): #points colours.

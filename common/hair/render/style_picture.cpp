@@ -26,6 +26,22 @@ cv::Vec3b style_colour(int8_t style) {
   }
 }
 
+int draw_style_legend(cv::Mat& image, cv::Point top_left, const std::array<int, 4>& count) {
+  const char* names[] = {"normal", "fixed", "short", "braided"};
+  int x = top_left.x;
+  for (int8_t style : {1, 3, 2, 0}) {
+    std::string text =
+        std::string(names[style]) + " " + std::to_string(count[static_cast<size_t>(style)]);
+    cv::Vec3b colour = style_colour(style);
+    cv::rectangle(image, cv::Rect(x, top_left.y, 12, 12),
+                  cv::Scalar(colour[0], colour[1], colour[2]), cv::FILLED);
+    cv::putText(image, text, cv::Point(x + 16, top_left.y + 11), cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+    x += 30 + 9 * static_cast<int>(text.size());
+  }
+  return x;
+}
+
 cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5::File& extract,
                        const RenderOptions& options) {
   std::vector<int8_t> cluster_style = read_cluster_styles(styles);
@@ -48,18 +64,7 @@ cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5
   std::array<int, 4> count{};
   for (int8_t style : cluster_style)
     if (style >= 0 && style < 4) ++count[static_cast<size_t>(style)];
-  const char* names[] = {"normal", "fixed", "short", "braided"};
-  int x = 10;
-  for (int8_t style : {1, 3, 2, 0}) {
-    std::string text =
-        std::string(names[style]) + " " + std::to_string(count[static_cast<size_t>(style)]);
-    cv::Vec3b colour = style_colour(style);
-    cv::rectangle(image, cv::Rect(x, 34, 12, 12), cv::Scalar(colour[0], colour[1], colour[2]),
-                  cv::FILLED);
-    cv::putText(image, text, cv::Point(x + 16, 45), cv::FONT_HERSHEY_SIMPLEX, 0.45,
-                cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
-    x += 30 + 9 * static_cast<int>(text.size());
-  }
+  draw_style_legend(image, cv::Point(10, 34), count);
   return image;
 }
 
