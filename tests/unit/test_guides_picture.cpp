@@ -61,6 +61,7 @@ RigidTransform shift(double metres) {
 /// at x = -0.04 (cluster 1). The guides move rigidly with the head of `head(frame)`.
 SimulationResult two_guides(int32_t frame_count, const std::function<RigidTransform(int)>& head) {
   SimulationResult result;
+  result.simulated_style = {0, 3};
   result.fps = 30;
   result.frame_count = frame_count;
   for (int g = 0; g < 2; ++g) {
