@@ -134,46 +134,97 @@ class BodyCollider : public StrandCollider {
   mutable double deepest_m_ = 0;
 };
 
-/// The centre strand of a wisp at rest: its members' runs through the braid, each
-/// resampled to `segments` equal arcs, averaged point by point, and pushed out of the
-/// body to the clearance. Empty when the members' runs have no length, when two
-/// consecutive points coincide, or when a point stays inside the body (strands that wrap
-/// the head average to a line through it: not a bundle that one strand can stand for).
-std::vector<Vec3> wisp_centre(const StrandSet& strands, const WispPlan& wisp, int segments,
-                              const BodySdf& body, double clearance_m) {
-  std::vector<Vec3> centre(static_cast<size_t>(segments) + 1, Vec3::Zero());
-  int used = 0;
-  for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
+/// Where a braided cluster's strands gather into a bundle, and its centre strand there.
+///
+/// Each member's run through the cluster is sampled every `step_m` of arc length from its
+/// tip back (braids end together; their strands come from all over the head). At each
+/// sample the members long enough give a mean point and a spread (mean distance from
+/// it). The bundle is the longest stretch of samples where at least half the members
+/// reach and the spread stays within `gather_radius_m`; the centre strand is the mean
+/// points over it, root end first, pushed out of the body to the clearance. Each member
+/// then enters the wisp at its first point within the bundle's length from its tip, and
+/// hangs from the point before that (or its root): `wisp`'s first points and anchors are
+/// updated. Empty (and `wisp` untouched) when there is no such stretch of two samples or
+/// more, or when a centre point stays inside the body.
+std::vector<Vec3> gather_wisp(const StrandSet& strands, WispPlan& wisp, double step_m,
+                              double gather_radius_m, const BodySdf& body, double clearance_m) {
+  struct Run {
+    std::vector<Vec3> points;
+    std::vector<double> from_tip;  ///< arc length from the tip, decreasing
+  };
+  std::vector<Run> runs(wisp.member_strand.size());
+  double longest = 0;
+  for (size_t m = 0; m < runs.size(); ++m) {
     int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
-    std::vector<Vec3> run;
+    Run& run = runs[m];
     for (int64_t i = wisp.member_first_point[m]; i < wisp.member_end_point[m]; ++i)
-      run.push_back(point_of(strands, base + i));
-    if (!(polyline_length(run) > 0)) continue;
-    std::vector<Vec3> resampled = resample_polyline(run, segments);
-    for (size_t k = 0; k < centre.size(); ++k) centre[k] += resampled[k];
-    ++used;
+      run.points.push_back(point_of(strands, base + i));
+    run.from_tip.assign(run.points.size(), 0.0);
+    for (size_t i = run.points.size() - 1; i-- > 0;)
+      run.from_tip[i] = run.from_tip[i + 1] + (run.points[i + 1] - run.points[i]).norm();
+    longest = std::max(longest, run.from_tip.front());
   }
-  if (used == 0) return {};
-  for (Vec3& p : centre) {
-    p /= used;
+  // The point of `run` at arc length `s` from its tip.
+  auto at = [](const Run& run, double s) {
+    size_t i = run.points.size() - 1;
+    while (i > 0 && run.from_tip[i - 1] < s) --i;
+    if (i == 0) return run.points.front();
+    double span = run.from_tip[i - 1] - run.from_tip[i];
+    double t = span > 0 ? (s - run.from_tip[i]) / span : 0.0;
+    return Vec3((1 - t) * run.points[i] + t * run.points[i - 1]);
+  };
+  int samples = static_cast<int>(std::floor(longest / step_m)) + 1;
+  std::vector<Vec3> mean(static_cast<size_t>(samples), Vec3::Zero());
+  std::vector<uint8_t> gathered(static_cast<size_t>(samples), 0);
+  for (int k = 0; k < samples; ++k) {
+    double s = k * step_m;
+    std::vector<Vec3> reached;
+    for (const Run& run : runs)
+      if (run.from_tip.front() >= s) reached.push_back(at(run, s));
+    if (2 * reached.size() < runs.size() || reached.empty()) continue;
+    Vec3 sum = Vec3::Zero();
+    for (const Vec3& p : reached) sum += p;
+    mean[static_cast<size_t>(k)] = sum / static_cast<double>(reached.size());
+    double spread = 0;
+    for (const Vec3& p : reached) spread += (p - mean[static_cast<size_t>(k)]).norm();
+    gathered[static_cast<size_t>(k)] =
+        spread / static_cast<double>(reached.size()) <= gather_radius_m;
+  }
+  int best_first = 0, best_count = 0;
+  for (int k = 0; k < samples;) {
+    if (!gathered[static_cast<size_t>(k)]) {
+      ++k;
+      continue;
+    }
+    int first = k;
+    while (k < samples && gathered[static_cast<size_t>(k)]) ++k;
+    if (k - first > best_count) {
+      best_count = k - first;
+      best_first = first;
+    }
+  }
+  if (best_count < 2) return {};
+  std::vector<Vec3> centre;
+  for (int k = best_first + best_count - 1; k >= best_first; --k) {
+    Vec3 p = mean[static_cast<size_t>(k)];
     double distance = body.distance(p);
     if (distance < clearance_m) push_out_of_body(body, p, distance, clearance_m);
     if (body.distance(p) < 0) return {};
+    centre.push_back(p);
   }
   for (size_t k = 1; k < centre.size(); ++k)
     if (!((centre[k] - centre[k - 1]).norm() > 1e-9)) return {};
-  return centre;
-}
-
-/// Mean length of a wisp's members' runs through the braid.
-double mean_run_length(const StrandSet& strands, const WispPlan& wisp) {
-  double total = 0;
-  for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
+  // Where each member enters the bundle, and what it hangs from.
+  const double bundle_from_tip = (best_first + best_count - 1) * step_m;
+  for (size_t m = 0; m < runs.size(); ++m) {
+    size_t i = 0;
+    while (i + 1 < runs[m].points.size() && runs[m].from_tip[i] > bundle_from_tip + 1e-12) ++i;
+    int64_t first = wisp.member_first_point[m] + static_cast<int64_t>(i);
+    wisp.member_first_point[m] = first;
     int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
-    for (int64_t i = wisp.member_first_point[m] + 1; i < wisp.member_end_point[m]; ++i)
-      total += (point_of(strands, base + i) - point_of(strands, base + i - 1)).norm();
+    wisp.anchor_m[m] = point_of(strands, base + std::max<int64_t>(0, first - 1));
   }
-  return wisp.member_strand.empty() ? 0.0 : total / static_cast<double>(wisp.member_strand.size());
+  return centre;
 }
 
 /// One simulated strand during the run.
@@ -245,18 +296,14 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
   std::map<int32_t, std::vector<Vec3>> centres;
   bool replan = false;
-  for (const WispPlan& wisp : result.plan.wisps) {
-    double length = mean_run_length(strands, wisp);
-    std::vector<Vec3> centre;
-    if (length > 1e-4 * h)
-      centre = wisp_centre(
-          strands, wisp,
-          segments_for(length, params.segment_length_h * h * params.wisp_segment_factor), *body,
-          clearance_m);
+  for (WispPlan& wisp : result.plan.wisps) {
+    std::vector<Vec3> centre =
+        gather_wisp(strands, wisp, params.segment_length_h * h * params.wisp_segment_factor,
+                    params.wisp_gather_radius_h * h, *body, clearance_m);
     if (centre.empty()) {
       spdlog::warn(
-          "{}: braided cluster {}: its {} strands do not gather into a bundle (their "
-          "mean runs inside the body); simulated as normal hair",
+          "{}: braided cluster {}: its {} strands do not gather into a bundle; simulated as "
+          "normal hair",
           scene.source, wisp.cluster, wisp.member_strand.size());
       result.simulated_style[static_cast<size_t>(wisp.cluster)] =
           static_cast<int8_t>(HairStyle::normal);
@@ -265,7 +312,13 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       centres[wisp.cluster] = std::move(centre);
     }
   }
-  if (replan) result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
+  if (replan) {
+    result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
+    for (WispPlan& wisp : result.plan.wisps)  // the same bundles as found above
+      centres[wisp.cluster] =
+          gather_wisp(strands, wisp, params.segment_length_h * h * params.wisp_segment_factor,
+                      params.wisp_gather_radius_h * h, *body, clearance_m);
+  }
 
   // The guides' strands.
   std::vector<RunningStrand> running;

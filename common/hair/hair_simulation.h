@@ -27,9 +27,11 @@ struct SimulationParams {
   double duration_s = 0;               ///< 0: one cycle of the head motion
   int substeps = 2;                    ///< time steps per frame
   int guide_count = 169;               ///< guides over the normal and short clusters (paper: 169)
-  double segment_length_h = 0.1;       ///< guide particle spacing along normal hair
+  double segment_length_h = 0.15;      ///< guide particle spacing along normal hair
   double short_segment_factor = 2;     ///< short hair: this many times longer segments (stiffer)
   double wisp_segment_factor = 1;      ///< a wisp's centre strand: segments this many times longer
+  double wisp_gather_radius_h = 0.15;  ///< a braid's strands are a bundle where their mean
+                                       ///< distance from their mean point is within this
   double mass_per_length_kg_m = 1e-3;  ///< of a guide (it stands for a lock of hair)
   StrandMaterial material;
   double gravity_m_s2 = 9.81;       ///< along -Y

@@ -23,6 +23,10 @@ void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
   params.add("wisp_segment_factor", p.wisp_segment_factor,
              "a braid's wisp centre strand: segments this many times longer",
              ParamRange::closed(0.25, 10));
+  params.add("wisp_gather_radius_h", p.wisp_gather_radius_h,
+             "a braid's strands form its wisp where their mean distance from their mean point "
+             "is within this, in H",
+             ParamRange::above(0));
   params.add("mass_per_length_kg_m", p.mass_per_length_kg_m,
              "mass of a guide per metre (it stands for a lock of hair), kg/m",
              ParamRange::above(0));
