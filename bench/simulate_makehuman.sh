@@ -4,9 +4,10 @@
 # timing of the integrated frames, guides.h5's guide_ms_per_frame) with 1 and 2 threads
 # for the default motion and a violent shake, with the default settings and a fast one
 # (one step per frame, particles every 0.2 H); the guides, particles, wisps and fixed
-# strands; the largest stretch and the deepest a particle went into the body before it
-# was pushed out; the setup (guides and the body's distance field); and the frame a
-# still head's hair settles at. Markdown tables on stdout.
+# strands; the largest stretch, the deepest a particle went into the body before it was
+# pushed out, and the largest share of particles left inside at a frame's end; the setup
+# (guides and the body's distance field); and the frame a still head's hair settles at.
+# Markdown tables on stdout.
 #
 #   bench/simulate_makehuman.sh [MAKEHUMAN_DIR]
 #
@@ -32,15 +33,17 @@ bin=$work/bin
 attribute() { h5dump -a "/$2" "$1" | sed -n 's/^ *(0): *//p' | head -n 1; }
 # largest FILE DATASET: the largest value of a 1-D dataset.
 largest() { h5dump -d "$2" "$1" | sed -n '/DATA {/,/}/p' | sed 's/([0-9]*)://' | grep -o '[-0-9.e+]\+' | sort -g | tail -n 1; }
-# count FILE DATASET: the length of a 1-D dataset.
-count() { h5ls "$1$2" | sed 's/.*{\([0-9]*\)\(\/[0-9A-Z]*\)\?}.*/\1/'; }
+# count FILE DATASET: the first extent of a dataset.
+count() { h5ls "$1$2" | sed 's/.*{\([0-9]*\).*/\1/'; }
+# words FILE DATASET: the values of an enum dataset, comma-separated.
+words() { h5dump -d "$2" "$1" | sed -n '/DATA {/,/}/p' | grep -o '[a-z]\+' | grep -v '^data$' | paste -sd, | sed 's/,/, /g'; }
 
 echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); median of $runs runs; parameters $params; style model $model_file."
 echo
-speed="| model | setting | motion | guides | particles (hair + ghost) | ms/frame, 1 thread | ms/frame, 2 threads | largest stretch | deepest in body (mm) | setup (s) |
-|---|---|---|---:|---:|---:|---:|---:|---:|---:|"
-styles_table="| model | styles | guides per cluster | wisps (strands bound) | fixed strands | still head settles at frame |
-|---|---|---|---|---:|---:|"
+speed="| model | setting | motion | guides | particles (hair + ghost) | ms/frame, 1 thread | ms/frame, 2 threads | largest stretch | deepest in body before the push (mm) | most left inside at a frame's end | setup (s) |
+|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+styles_table="| model | styles (styles.h5) | simulated as | guides per cluster | wisps (points bound) | fixed strands | still head settles at frame |
+|---|---|---|---|---|---:|---:|"
 for model in $models; do
   dir=$work/$model
   pipeline_to_clusters "$makehuman/hair/$model.obj" "$makehuman/body.obj" "$dir"
@@ -54,7 +57,7 @@ for model in $models; do
       declare -A ms=()
       for threads in 1 2; do
         ms[$threads]=$(for ((run = 0; run < runs; ++run)); do
-          "$bin/simulate" "${inputs[@]}" "${extra[@]}" --motion "$motion" --threads "$threads" -o "$dir/guides.h5"
+          "$bin/simulate" "${inputs[@]}" "${extra[@]}" --motion "$motion" --threads "$threads" -o "$dir/guides.h5" 2>/dev/null
           attribute "$dir/guides.h5" guide_ms_per_frame
         done | median | awk '{ printf "%.2f", $1 }')
       done
@@ -65,16 +68,16 @@ for model in $models; do
       stretch=$(largest "$file" /frames/max_stretch | awk '{ printf "%.3f", $1 }')
       depth=$(largest "$file" /frames/max_penetration_m | awk '{ printf "%.1f", $1 * 1000 }')
       setup=$(attribute "$file" setup_s | awk '{ printf "%.2f", $1 }')
-      speed+=$'\n'"| $model | $setting | $motion | $guides | $hair + $ghosts | ${ms[1]} | ${ms[2]} | $stretch | $depth | $setup |"
+      inside=$(largest "$file" /frames/inside_fraction | awk '{ printf "%.2f%%", $1 * 100 }')
+      speed+=$'\n'"| $model | $setting | $motion | $guides | $hair + $ghosts | ${ms[1]} | ${ms[2]} | $stretch | $depth | $inside | $setup |"
     done
   done
-  "$bin/simulate" "${inputs[@]}" --motion still --duration_s 10 -o "$dir/still.h5"
+  "$bin/simulate" "${inputs[@]}" --motion still --duration_s 10 -o "$dir/still.h5" 2>/dev/null
   settled=$(attribute "$dir/still.h5" settled_at_frame)
   [[ $settled == -1 ]] && settled="not in 10 s"
-  words=$(h5dump -d /clusters/style "$dir/guides.h5" | sed -n '/DATA {/,/}/p' | grep -o '[a-z]\+' | grep -v '^data$' | paste -sd, | sed 's/,/, /g')
   per_cluster=$(h5dump -d /clusters/guide_count "$dir/guides.h5" | sed -n '/DATA {/,/}/p' | sed 's/([0-9]*)://' | grep -o '[0-9]\+' | paste -sd, | sed 's/,/, /g')
   wisps="$(count "$dir/guides.h5" /wisps/guide) ($(count "$dir/guides.h5" /wisps/binding_point) points)"
-  styles_table+=$'\n'"| $model | $words | $per_cluster | $wisps | $(attribute "$dir/guides.h5" fixed_strand_count) | $settled |"
+  styles_table+=$'\n'"| $model | $(words "$dir/guides.h5" /clusters/style) | $(words "$dir/guides.h5" /clusters/simulated_style) | $per_cluster | $wisps | $(attribute "$dir/guides.h5" fixed_strand_count) | $settled |"
 done
 echo "$speed"
 echo

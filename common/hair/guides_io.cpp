@@ -95,7 +95,7 @@ void write_guides_file(h5::File& file, const SimulationResult& result, const Gui
 
   // Frames, one chunk per frame.
   const int64_t frames = result.frame_count;
-  std::vector<double> time_s, kinetic, elastic, gravity, stretch, penetration, speed;
+  std::vector<double> time_s, kinetic, elastic, gravity, stretch, penetration, inside, speed;
   std::vector<uint8_t> integrated;
   std::vector<double> rotation, translation;
   for (int64_t f = 0; f < frames; ++f) {
@@ -106,6 +106,7 @@ void write_guides_file(h5::File& file, const SimulationResult& result, const Gui
     gravity.push_back(stats.gravity_energy_j);
     stretch.push_back(stats.max_stretch);
     penetration.push_back(stats.max_penetration_m);
+    inside.push_back(stats.inside_fraction);
     speed.push_back(stats.max_speed_m_s);
     integrated.push_back(f > 0 && stats.integrated ? 1 : 0);
     const RigidTransform& head = result.head[static_cast<size_t>(f)];
@@ -126,6 +127,7 @@ void write_guides_file(h5::File& file, const SimulationResult& result, const Gui
   h5::write_vector(file, "/frames/gravity_energy_j", gravity);
   h5::write_vector(file, "/frames/max_stretch", stretch);
   h5::write_vector(file, "/frames/max_penetration_m", penetration);
+  h5::write_vector(file, "/frames/inside_fraction", inside);
   h5::write_vector(file, "/frames/max_speed_m_s", speed);
 
   // Wisps.

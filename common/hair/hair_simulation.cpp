@@ -528,6 +528,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   auto frame_statistics = [&](double time_s, const RigidTransform& pose) {
     FrameStatistics stats;
     stats.time_s = time_s;
+    int64_t inside = 0, hair_total = 0;
     for (RunningStrand& strand : running) {
       const auto& x = strand.state.position_m;
       const auto& v = strand.state.velocity_m_s;
@@ -548,7 +549,14 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       stats.max_stretch = std::max(stats.max_stretch, strain);
       stats.max_penetration_m = std::max(stats.max_penetration_m, strand.penetration_m);
       strand.penetration_m = 0;
+      if (body) {
+        for (int32_t q : strand.model.hair_particle) {
+          ++hair_total;
+          if (body->distance(pose.apply_inverse(x[static_cast<size_t>(q)])) < 0) ++inside;
+        }
+      }
     }
+    stats.inside_fraction = hair_total ? static_cast<double>(inside) / static_cast<double>(hair_total) : 0.0;
     return stats;
   };
 

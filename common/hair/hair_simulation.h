@@ -98,6 +98,7 @@ struct FrameStatistics {
   double max_stretch = 0;        ///< largest |strain| of a hair segment
   double max_penetration_m = 0;  ///< deepest a hair particle was inside the body before
                                  ///< it was pushed out, over the frame's steps
+  double inside_fraction = 0;       ///< hair particles inside the body at the frame's end
   double max_speed_m_s = 0;      ///< fastest hair particle over the frame (its
                                  ///< displacement since the last frame times fps)
   bool integrated = true;        ///< false once a still head has settled

@@ -322,6 +322,10 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
       slide -= slide.dot(contact.normal) * contact.normal;
       double length = slide.norm(), grip = friction * contact.moved_m;
       tip_side -= length <= grip ? slide : Vec3(slide * (grip / length));
+      // Where the body and the length still disagree (a body part sweeping through the
+      // hair faster than a step resolves), the length wins: a particle left inside for
+      // a step is hidden by the body, a stretched strand is not.
+      limit(i, tip_side);
       contacts_.push_back(contact);
     }
     move_segment(i, tip_side - before);
