@@ -11,10 +11,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-Vec3 point_of(const StrandSet& strands, int64_t row) {
-  return strands.points.row(row).cast<double>().transpose();
-}
-
 /// Guides per cluster: proportional to the candidates, by largest remainders, at least
 /// one for every cluster with candidates while guides last.
 std::vector<int32_t> allocate_guides(const std::vector<int64_t>& candidates, int guide_count) {
@@ -153,7 +149,7 @@ GuidePlan plan_guides(const StrandSet& strands, const std::vector<int8_t>& clust
           wisp.member_strand.push_back(s);
           wisp.member_first_point.push_back(row - begin);
           wisp.member_end_point.push_back(run_end - begin);
-          wisp.anchor_m.push_back(point_of(strands, row == begin ? row : row - 1));
+          wisp.anchor_m.push_back(point_of(strands.points, row == begin ? row : row - 1));
           if (!held) ++wisp.loose_anchor_count;
         }
         simulated_before = true;
@@ -189,7 +185,7 @@ GuidePlan plan_guides(const StrandSet& strands, const std::vector<int8_t>& clust
     std::vector<Vec3> anchors;
     for (const GuideStrand& guide : candidates[c])
       anchors.push_back(point_of(
-          strands, strands.offsets[static_cast<size_t>(guide.strand)] + guide.anchor_point));
+          strands.points, strands.offsets[static_cast<size_t>(guide.strand)] + guide.anchor_point));
     for (int64_t k : farthest_point_sample(anchors, plan.cluster_guides[c]))
       plan.guides.push_back(candidates[c][static_cast<size_t>(k)]);
   }

@@ -19,10 +19,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-Vec3 point_of(const StrandSet& strands, int64_t row) {
-  return strands.points.row(row).cast<double>().transpose();
-}
-
 /// The polyline `points` resampled to `segments` equal arcs, both ends kept.
 std::vector<Vec3> resample_polyline(const std::vector<Vec3>& points, int segments) {
   std::vector<double> arc(points.size(), 0.0);
@@ -158,7 +154,7 @@ std::vector<Vec3> gather_wisp(const StrandSet& strands, WispPlan& wisp, double s
     int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
     Run& run = runs[m];
     for (int64_t i = wisp.member_first_point[m]; i < wisp.member_end_point[m]; ++i)
-      run.points.push_back(point_of(strands, base + i));
+      run.points.push_back(point_of(strands.points, base + i));
     run.from_tip.assign(run.points.size(), 0.0);
     for (size_t i = run.points.size() - 1; i-- > 0;)
       run.from_tip[i] = run.from_tip[i + 1] + (run.points[i + 1] - run.points[i]).norm();
@@ -222,7 +218,7 @@ std::vector<Vec3> gather_wisp(const StrandSet& strands, WispPlan& wisp, double s
     int64_t first = wisp.member_first_point[m] + static_cast<int64_t>(i);
     wisp.member_first_point[m] = first;
     int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
-    wisp.anchor_m[m] = point_of(strands, base + std::max<int64_t>(0, first - 1));
+    wisp.anchor_m[m] = point_of(strands.points, base + std::max<int64_t>(0, first - 1));
   }
   return centre;
 }
@@ -279,8 +275,8 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     int8_t style =
         scene.cluster_style[static_cast<size_t>(point_cluster[static_cast<size_t>(row)])];
     if (style < 0 || style == static_cast<int8_t>(HairStyle::fixed)) continue;
-    low = low.cwiseMin(point_of(strands, row));
-    high = high.cwiseMax(point_of(strands, row));
+    low = low.cwiseMin(point_of(strands.points, row));
+    high = high.cwiseMax(point_of(strands.points, row));
   }
   std::optional<BodySdf> body;
   const double clearance_m = params.body_clearance_h * h;
@@ -326,7 +322,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     int64_t begin = strands.offsets[static_cast<size_t>(guide.strand)] + guide.anchor_point;
     int64_t end = strands.offsets[static_cast<size_t>(guide.strand) + 1];
     std::vector<Vec3> polyline;
-    for (int64_t row = begin; row < end; ++row) polyline.push_back(point_of(strands, row));
+    for (int64_t row = begin; row < end; ++row) polyline.push_back(point_of(strands.points, row));
     double length = polyline_length(polyline);
     if (!(length > 1e-4 * h)) continue;
     double spacing = params.segment_length_h * h *
@@ -394,7 +390,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
       int64_t end = strands.offsets[static_cast<size_t>(wisp.member_strand[m]) + 1];
       for (int64_t row = base + wisp.member_first_point[m]; row < end; ++row) {
-        Vec3 p = point_of(strands, row);
+        Vec3 p = point_of(strands.points, row);
         size_t nearest = 0;
         double best = std::numeric_limits<double>::infinity();
         for (size_t t = 0; t < centroid.size(); ++t) {
@@ -556,7 +552,8 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
         }
       }
     }
-    stats.inside_fraction = hair_total ? static_cast<double>(inside) / static_cast<double>(hair_total) : 0.0;
+    stats.inside_fraction =
+        hair_total ? static_cast<double>(inside) / static_cast<double>(hair_total) : 0.0;
     return stats;
   };
 

@@ -39,10 +39,6 @@ bool is_root_type(GroupType type) {
   return type == GroupType::root_free || type == GroupType::root_connected;
 }
 
-Vec3 point_of(const Points3f& points, int64_t row) {
-  return points.row(row).cast<double>().transpose();
-}
-
 /// A place where a strand can be entered at the end of another: the first point of an
 /// input strand (followed root to tip) or its last (followed backwards, for pieces that
 /// extract read tip to root).

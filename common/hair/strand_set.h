@@ -12,6 +12,11 @@ namespace hair {
 /// Row-major n x 3 float32 positions, the layout of HDF5 `points` datasets.
 using Points3f = Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
+/// Row `row` of `points` in double precision, as the algorithms compute.
+inline Eigen::Vector3d point_of(const Points3f& points, int64_t row) {
+  return points.row(row).cast<double>().transpose();
+}
+
 /// A column of per-strand or per-point values.
 using AttributeColumn = std::variant<std::vector<int32_t>, std::vector<float>, Points3f>;
 

@@ -14,10 +14,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-Vec3 point_of(const Points3f& points, int64_t row) {
-  return points.row(row).cast<double>().transpose();
-}
-
 const std::vector<int32_t>& point_ids(const StyleFeatureInput& input, const std::string& name) {
   const auto& columns = input.strands.point_attributes;
   auto found = columns.find(name);
