@@ -223,6 +223,70 @@ std::vector<Vec3> gather_wisp(const StrandSet& strands, WispPlan& wisp, double s
   return centre;
 }
 
+/// gather_wisp() on the members of `wisp` whose tips end together (see there); the
+/// others are left out of it and returned in `loose` as normal-hair guide candidates of
+/// its cluster.
+std::vector<Vec3> gather_wisp(const StrandSet& strands, WispPlan& wisp, double step_m,
+                              double gather_radius_m, const BodySdf& body, double clearance_m,
+                              std::vector<GuideStrand>& loose) {
+  // The members that end together: a trimmed mean of the tips, dropping those farther
+  // than twice the radius, until it settles. The others are not in the braid (a cluster
+  // can hold the hair that leads into a braid as well): they become guide candidates.
+  {
+    std::vector<Vec3> tip(wisp.member_strand.size());
+    for (size_t m = 0; m < tip.size(); ++m)
+      tip[m] =
+          point_of(strands.points, strands.offsets[static_cast<size_t>(wisp.member_strand[m])] +
+                                       wisp.member_end_point[m] - 1);
+    std::vector<uint8_t> in(tip.size(), 1);
+    for (int round = 0; round < 20; ++round) {
+      Vec3 sum = Vec3::Zero();
+      size_t count = 0;
+      for (size_t m = 0; m < tip.size(); ++m)
+        if (in[m]) sum += tip[m], ++count;
+      if (count == 0) return {};
+      Vec3 centre = sum / static_cast<double>(count);
+      bool changed = false;
+      for (size_t m = 0; m < tip.size(); ++m) {
+        uint8_t near = (tip[m] - centre).norm() <= 2 * gather_radius_m;
+        changed |= near != in[m];
+        in[m] = near;
+      }
+      if (!changed) break;
+    }
+    size_t kept = 0;
+    for (uint8_t i : in) kept += i;
+    if (kept < 2) return {};
+    WispPlan core = wisp;
+    core.member_strand.clear();
+    core.member_first_point.clear();
+    core.member_end_point.clear();
+    core.anchor_m.clear();
+    std::vector<GuideStrand> outside;
+    for (size_t m = 0; m < tip.size(); ++m) {
+      if (in[m]) {
+        core.member_strand.push_back(wisp.member_strand[m]);
+        core.member_first_point.push_back(wisp.member_first_point[m]);
+        core.member_end_point.push_back(wisp.member_end_point[m]);
+        core.anchor_m.push_back(wisp.anchor_m[m]);
+      } else {
+        GuideStrand guide;
+        guide.strand = wisp.member_strand[m];
+        guide.anchor_point = std::max<int64_t>(0, wisp.member_first_point[m] - 1);
+        guide.cluster = wisp.cluster;
+        guide.style = HairStyle::normal;
+        outside.push_back(guide);
+      }
+    }
+    std::vector<Vec3> centre =
+        gather_wisp(strands, core, step_m, gather_radius_m, body, clearance_m);
+    if (centre.empty()) return {};
+    wisp = std::move(core);
+    loose = std::move(outside);
+    return centre;
+  }
+}
+
 /// One simulated strand during the run.
 struct RunningStrand {
   AltitudeStrand model;
@@ -262,11 +326,6 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   result.fps = params.fps;
   const auto& point_cluster =
       std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
-  for (int64_t s = 0; s < strands.strand_count(); ++s) {
-    int8_t style = scene.cluster_style[static_cast<size_t>(
-        point_cluster[static_cast<size_t>(strands.offsets[static_cast<size_t>(s)])])];
-    if (style == static_cast<int8_t>(HairStyle::fixed)) ++result.fixed_strands;
-  }
 
   // The body's signed distance field over the hair to simulate at rest (with a margin
   // for its swing), built only when there is some.
@@ -291,29 +350,81 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   result.simulated_style = scene.cluster_style;
   result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
   std::map<int32_t, std::vector<Vec3>> centres;
-  bool replan = false;
-  for (WispPlan& wisp : result.plan.wisps) {
-    std::vector<Vec3> centre =
-        gather_wisp(strands, wisp, params.segment_length_h * h * params.wisp_segment_factor,
-                    params.wisp_gather_radius_h * h, *body, clearance_m);
-    if (centre.empty()) {
-      spdlog::warn(
-          "{}: braided cluster {}: its {} strands do not gather into a bundle; simulated as "
-          "normal hair",
-          scene.source, wisp.cluster, wisp.member_strand.size());
-      result.simulated_style[static_cast<size_t>(wisp.cluster)] =
-          static_cast<int8_t>(HairStyle::normal);
-      replan = true;
-    } else {
-      centres[wisp.cluster] = std::move(centre);
-    }
-  }
-  if (replan) {
-    result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
-    for (WispPlan& wisp : result.plan.wisps)  // the same bundles as found above
-      centres[wisp.cluster] =
+  std::vector<GuideStrand> loose;  // braided clusters' strands outside their bundles
+  auto gather_all = [&](bool say) {
+    bool failed = false;
+    loose.clear();
+    for (WispPlan& wisp : result.plan.wisps) {
+      std::vector<GuideStrand> outside;
+      std::vector<Vec3> centre =
           gather_wisp(strands, wisp, params.segment_length_h * h * params.wisp_segment_factor,
-                      params.wisp_gather_radius_h * h, *body, clearance_m);
+                      params.wisp_gather_radius_h * h, *body, clearance_m, outside);
+      if (centre.empty()) {
+        // Not a braid: hair lying on the head (most of its points within 0.1 H of the
+        // body, as a cap gathered into a braid) is held there, other hair hangs free.
+        int64_t points = 0, lying = 0;
+        for (size_t m = 0; m < wisp.member_strand.size(); ++m) {
+          int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
+          for (int64_t i = wisp.member_first_point[m]; i < wisp.member_end_point[m]; ++i) {
+            ++points;
+            lying += body->distance(point_of(strands.points, base + i)) < 0.1 * h;
+          }
+        }
+        HairStyle instead = 2 * lying >= points ? HairStyle::fixed : HairStyle::normal;
+        spdlog::warn(
+            "{}: braided cluster {}: its {} strands do not gather into a bundle; {}% of its "
+            "points lie on the body: simulated as {} hair",
+            scene.source, wisp.cluster, wisp.member_strand.size(),
+            points ? 100 * lying / points : 0, hair_style_name(instead));
+        result.simulated_style[static_cast<size_t>(wisp.cluster)] = static_cast<int8_t>(instead);
+        failed = true;
+        continue;
+      }
+      if (say && !outside.empty())
+        spdlog::info(
+            "{}: braided cluster {}: {} of its strands end away from the braid; "
+            "simulated as normal hair",
+            scene.source, wisp.cluster, outside.size());
+      centres[wisp.cluster] = std::move(centre);
+      loose.insert(loose.end(), outside.begin(), outside.end());
+    }
+    return failed;
+  };
+  if (gather_all(true)) {  // again without the clusters that are not braids
+    result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
+    gather_all(false);
+  }
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    int8_t style = result.simulated_style[static_cast<size_t>(
+        point_cluster[static_cast<size_t>(strands.offsets[static_cast<size_t>(s)])])];
+    if (style == static_cast<int8_t>(HairStyle::fixed)) ++result.fixed_strands;
+  }
+
+  // Guides for the strands outside the bundles, in proportion, as plan_guides gives them.
+  if (!loose.empty()) {
+    int64_t candidates = static_cast<int64_t>(loose.size());
+    for (size_t c = 0; c < result.plan.cluster_candidates.size(); ++c) {
+      int8_t style = result.simulated_style[c];
+      if (style == static_cast<int8_t>(HairStyle::normal) ||
+          style == static_cast<int8_t>(HairStyle::short_hair))
+        candidates += result.plan.cluster_candidates[c];
+    }
+    std::map<int32_t, std::vector<GuideStrand>> by_cluster;
+    for (const GuideStrand& guide : loose) by_cluster[guide.cluster].push_back(guide);
+    for (auto& [cluster, members] : by_cluster) {
+      auto count = std::max<int64_t>(
+          1, std::llround(static_cast<double>(params.guide_count) *
+                          static_cast<double>(members.size()) / static_cast<double>(candidates)));
+      std::vector<Vec3> anchors;
+      for (const GuideStrand& guide : members)
+        anchors.push_back(
+            point_of(strands.points,
+                     strands.offsets[static_cast<size_t>(guide.strand)] + guide.anchor_point));
+      for (int64_t k : farthest_point_sample(anchors, count))
+        result.plan.guides.push_back(members[static_cast<size_t>(k)]);
+      result.plan.cluster_guides[static_cast<size_t>(cluster)] +=
+          static_cast<int32_t>(std::min<int64_t>(count, static_cast<int64_t>(members.size())));
+    }
   }
 
   // The guides' strands.

@@ -98,7 +98,7 @@ struct FrameStatistics {
   double max_stretch = 0;        ///< largest |strain| of a hair segment
   double max_penetration_m = 0;  ///< deepest a hair particle was inside the body before
                                  ///< it was pushed out, over the frame's steps
-  double inside_fraction = 0;       ///< hair particles inside the body at the frame's end
+  double inside_fraction = 0;    ///< hair particles inside the body at the frame's end
   double max_speed_m_s = 0;      ///< fastest hair particle over the frame (its
                                  ///< displacement since the last frame times fps)
   bool integrated = true;        ///< false once a still head has settled
@@ -107,8 +107,9 @@ struct FrameStatistics {
 /// The simulation: guides, their positions per frame, the head, the wisps.
 struct SimulationResult {
   std::vector<SimulatedGuide> guides;
-  /// The style each cluster was simulated as: its style, but normal for a braided
-  /// cluster whose strands do not gather into a bundle (their mean runs inside the body).
+  /// The style each cluster was simulated as: its style, but for a braided cluster whose
+  /// strands do not gather into a bundle, fixed if most of its points lie on the body
+  /// (within 0.1 H: a cap gathered into a braid) and normal otherwise.
   std::vector<int8_t> simulated_style;
   GuidePlan plan;
   int32_t frame_count = 0;
