@@ -706,7 +706,9 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
         gather_hair();
         density.build(hair_positions);
       }
-#pragma omp parallel for schedule(dynamic, 4)
+      // A few guides are not worth a thread team's barrier per step (on a busy machine a
+      // barrier can wait out another process's time slice).
+#pragma omp parallel for schedule(dynamic, 4) if (running.size() >= 32)
       for (size_t g = 0; g < running.size(); ++g) {
         RunningStrand& strand = running[g];
         auto& x = strand.state.position_m;
