@@ -3,12 +3,16 @@
 // (DESIGN.md, contract 1).
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "hair/h5/dataset.h"
+#include "hair/h5/file.h"
 #include "support/run_command.h"
 
 namespace hair::test {
@@ -50,6 +54,21 @@ inline void expect_clean_failures(const std::filesystem::path& binary, const std
       EXPECT_TRUE(read_file_bytes(existing) == existing_bytes) << bad.expected;
     }
   }
+}
+
+/// A copy of the HDF5 file `source` at `copy` with one coordinate of its float32 n x 3
+/// dataset `path` (row 1, y) set to NaN: bad input the stages must refuse.
+inline std::filesystem::path copy_with_nan(const std::filesystem::path& source,
+                                           const std::filesystem::path& copy, const char* path) {
+  std::filesystem::copy_file(source, copy, std::filesystem::copy_options::overwrite_existing);
+  auto points = hair::h5::read_matrix<float, 3>(hair::h5::File::open_read_only(source), path);
+  points(1, 1) = std::numeric_limits<float>::quiet_NaN();
+  hid_t file = H5Fopen(copy.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  hid_t dataset = H5Dopen2(file, path, H5P_DEFAULT);
+  EXPECT_GE(H5Dwrite(dataset, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, points.data()), 0);
+  H5Dclose(dataset);
+  H5Fclose(file);
+  return copy;
 }
 
 }  // namespace hair::test

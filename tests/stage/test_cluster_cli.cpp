@@ -2,13 +2,11 @@
 // and typeify, on a model without middle groups (cluster-middle skips), determinism,
 // and bad input (exit 2, one line, nothing written).
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <limits>
 #include <set>
 #include <tuple>
 
@@ -17,6 +15,7 @@
 #include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
 #include "hair/strand_set.h"
+#include "stage/clean_failures.h"
 #include "support/run_command.h"
 
 namespace {
@@ -54,20 +53,6 @@ Outputs run_pipeline(const TemporaryDirectory& directory, const fs::path& mesh,
   run_stage("cluster-middle", {out.types.string(), "-o", out.middle.string()});
   run_stage("cluster-all", {out.types.string(), out.middle.string(), "-o", out.clusters.string()});
   return out;
-}
-
-/// A copy of types.h5 with one centre-strand coordinate set to NaN.
-fs::path types_with_nan(const fs::path& types, const fs::path& copy) {
-  fs::copy_file(types, copy, fs::copy_options::overwrite_existing);
-  Points3f points = hair::h5::read_matrix<float, 3>(hair::h5::File::open_read_only(types),
-                                                    "/centre_strands/points");
-  points(1, 1) = std::numeric_limits<float>::quiet_NaN();
-  hid_t file = H5Fopen(copy.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  hid_t dataset = H5Dopen2(file, "/centre_strands/points", H5P_DEFAULT);
-  EXPECT_GE(H5Dwrite(dataset, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, points.data()), 0);
-  H5Dclose(dataset);
-  H5Fclose(file);
-  return copy;
 }
 
 std::string file_bytes(const fs::path& path) {
@@ -144,7 +129,8 @@ TEST(ClusterCli, WrongInputsFailCleanly) {
       {"cluster-middle", {(directory / "text.h5").string()}, "text.h5"},
       {"cluster-middle", {out.extract.string()}, "hairstyle.types"},
       {"cluster-middle",
-       {types_with_nan(out.types, directory / "nan_types.h5").string()},
+       {hair::test::copy_with_nan(out.types, directory / "nan_types.h5", "/centre_strands/points")
+            .string()},
        "expected finite values"},
       {"cluster-middle", {out.types.string(), "--k1", "0.5"}, "k1 + k2 + k3"},
       {"cluster-middle", {out.types.string(), "--f3_max", "2"}, "f3_max"},

@@ -4,12 +4,10 @@
 // count; bad input (exit 2, one line, no output, an existing output untouched); the
 // report's header, row and refusal.
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -184,20 +182,6 @@ TEST_F(GrowCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
   }
 }
 
-/// A copy of extract.h5 with one coordinate of the float32 n x 3 dataset `path` set to NaN.
-fs::path extract_with_nan(const fs::path& extract, const fs::path& copy, const char* path) {
-  fs::copy_file(extract, copy, fs::copy_options::overwrite_existing);
-  hair::Points3f points =
-      hair::h5::read_matrix<float, 3>(hair::h5::File::open_read_only(extract), path);
-  points(1, 1) = std::numeric_limits<float>::quiet_NaN();
-  hid_t file = H5Fopen(copy.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  hid_t dataset = H5Dopen2(file, path, H5P_DEFAULT);
-  EXPECT_GE(H5Dwrite(dataset, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, points.data()), 0);
-  H5Dclose(dataset);
-  H5Fclose(file);
-  return copy;
-}
-
 TEST_F(GrowCli, WrongInputsFailCleanly) {
   const Outputs braid = sample("braid01", false), ponytail = sample("ponytail01", false);
   const TemporaryDirectory& directory = GrowCli::directory();
@@ -207,10 +191,12 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
   const std::vector<hair::test::FailureCase> cases = {
       {{(directory / "missing.h5").string(), types, clusters}, "missing.h5"},
       {{(directory / "text.h5").string(), types, clusters}, "not an HDF5 file"},
-      {{extract_with_nan(braid.extract, directory / "nan_strand.h5", "/strands/points").string(),
+      {{hair::test::copy_with_nan(braid.extract, directory / "nan_strand.h5", "/strands/points")
+            .string(),
         types, clusters},
        "/strands/points: expected finite values"},
-      {{extract_with_nan(braid.extract, directory / "nan_body.h5", "/body/vertices").string(),
+      {{hair::test::copy_with_nan(braid.extract, directory / "nan_body.h5", "/body/vertices")
+            .string(),
         types, clusters},
        "/body/vertices: expected finite values"},
       {{types, extract, clusters}, "expected hairstyle.extract"},

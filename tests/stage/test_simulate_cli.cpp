@@ -172,6 +172,15 @@ TEST_F(SimulateCli, WrongInputsFailCleanly) {
       {{extract, styles, styles}, "expected hairstyle.strands"},
       {{extract, strands, strands}, "expected hairstyle.styles"},
       {{extract, strands, styles_of(ponytail).string()}, "another model"},
+      {{extract,
+        hair::test::copy_with_nan(braid.strands, directory / "nan_strands.h5", "/strands/points")
+            .string(),
+        styles},
+       "/strands/points: expected finite values"},
+      {{hair::test::copy_with_nan(braid.extract, directory / "nan_body.h5", "/body/vertices")
+            .string(),
+        strands, styles},
+       "/body/vertices: expected finite values"},
       {{extract, strands, styles, "--motion", "dance"}, "motion"},
       {{extract, strands, styles, "--fps", "0"}, "fps"},
       {{extract, strands, styles, "--substeps", "0"}, "substeps"},
