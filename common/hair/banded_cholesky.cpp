@@ -1,34 +1,44 @@
 #include "hair/banded_cholesky.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace hair {
 
 namespace {
 
-/// The factorisation, with the bandwidth a compile-time constant where it is the strand
-/// solver's (so the inner loops unroll) and a run-time one otherwise. Column j of the
-/// storage holds U(k, j) for k = j - kd .. j contiguously, so both factors of the inner
-/// products run along memory.
+/// The factorisation, right-looking: once row j of U is known, its outer product is taken
+/// off the trailing kd x kd triangle. Every update of that triangle is independent of the
+/// others and runs along a column of the storage (column l holds A(k, l) for k = l - kd ..
+/// l contiguously), so the loops vectorise; the left-looking order (a dot product per
+/// entry) waits on each multiply-add in turn. The bandwidth is a compile-time constant
+/// where it is the strand solver's, so the loops unroll, and a run-time one otherwise.
 template <int kFixed>
 int factor(double* band, int n, int runtime_kd) {
   const int kd = kFixed > 0 ? kFixed : runtime_kd, ldab = kd + 1;
+  auto column = [&](int l) { return band + static_cast<ptrdiff_t>(l) * ldab + kd - l; };
+  std::array<double, 64> row_storage{};
+  std::vector<double> row_heap;
+  double* row = row_storage.data();
+  if (kd > static_cast<int>(row_storage.size())) {
+    row_heap.resize(static_cast<size_t>(kd));
+    row = row_heap.data();
+  }
   for (int j = 0; j < n; ++j) {
-    double* column_j = band + static_cast<ptrdiff_t>(j) * ldab + kd - j;  // column_j[k] = U(k, j)
-    int first = std::max(0, j - kd);
+    double* column_j = column(j);  // column_j[k] = A(k, j), then U(k, j)
     double diagonal = column_j[j];
-    for (int k = first; k < j; ++k) diagonal -= column_j[k] * column_j[k];
     if (!(diagonal > 0)) return j + 1;
     diagonal = std::sqrt(diagonal);
     column_j[j] = diagonal;
     const double inverse = 1 / diagonal;
-    int last = std::min(n - 1, j + kd);
-    for (int i = j + 1; i <= last; ++i) {
-      double* column_i = band + static_cast<ptrdiff_t>(i) * ldab + kd - i;
-      double value = column_i[j];
-      for (int k = std::max(0, i - kd); k < j; ++k) value -= column_j[k] * column_i[k];
-      column_i[j] = value * inverse;
+    const int reach = std::min(n - 1 - j, kd);
+    for (int t = 0; t < reach; ++t) row[t] = column(j + 1 + t)[j] *= inverse;  // U(j, j+1+t)
+    for (int t = 0; t < reach; ++t) {
+      double* column_l = column(j + 1 + t) + j + 1;  // A(j+1 .. j+1+t, l)
+      const double scale = row[t];
+      for (int i = 0; i <= t; ++i) column_l[i] -= row[i] * scale;
     }
   }
   return 0;
@@ -44,17 +54,17 @@ int solve_banded_spd(std::span<double> band, std::span<double> rhs, int n, int b
   auto u = [&](int k, int j) -> double& {
     return band[static_cast<size_t>(kd + k - j + j * ldab)];
   };
-  // U^T y = b, then U x = y.
+  // U^T y = b (each y_j a dot product along column j), then U x = y by columns: once
+  // x_j is known, it is taken off the entries above it, along column j.
   for (int j = 0; j < n; ++j) {
     double value = rhs[static_cast<size_t>(j)];
     for (int k = std::max(0, j - kd); k < j; ++k) value -= u(k, j) * rhs[static_cast<size_t>(k)];
     rhs[static_cast<size_t>(j)] = value / u(j, j);
   }
   for (int j = n - 1; j >= 0; --j) {
-    double value = rhs[static_cast<size_t>(j)];
-    for (int i = j + 1; i <= std::min(n - 1, j + kd); ++i)
-      value -= u(j, i) * rhs[static_cast<size_t>(i)];
-    rhs[static_cast<size_t>(j)] = value / u(j, j);
+    double value = rhs[static_cast<size_t>(j)] / u(j, j);
+    rhs[static_cast<size_t>(j)] = value;
+    for (int k = std::max(0, j - kd); k < j; ++k) rhs[static_cast<size_t>(k)] -= u(k, j) * value;
   }
   return 0;
 }

@@ -18,6 +18,7 @@ void push_out_along_gradient(const BodySdf& body, Vec3& point_m, double distance
 bool BodyCollider::collide(Vec3& position_m, const Vec3& start_m, Vec3& normal,
                            Vec3& surface_velocity_m_s) const {
   Vec3 rest = end_.apply_inverse(position_m);
+  if (body_.certainly_farther_than(rest, clearance_m_)) return false;
   double distance = body_.distance(rest);
   if (distance >= clearance_m_) return false;
   deepest_m_ = std::max(deepest_m_, -distance);

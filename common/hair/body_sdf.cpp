@@ -563,6 +563,39 @@ BodySdf::BodySdf(const Points3f& vertices, const Triangles3i& triangles,
   BandDistances band = band_distances(surface, lattice, band_m);
   sign_distances(surface, lattice, band);
   values_ = std::move(band.distance_m);
+
+  // Cells run 0 .. dims - 2 (locate clamps to them); block b holds cells b * kBlockCells
+  // .. + kBlockCells - 1, whose corners are voxels b * kBlockCells .. + kBlockCells.
+  for (int axis = 0; axis < 3; ++axis)
+    block_dims_[axis] = std::max(1, (dims_[axis] - 2) / kBlockCells + 1);
+  block_minimum_.assign(static_cast<size_t>(block_dims_.prod()),
+                        std::numeric_limits<float>::infinity());
+  for (int z = 0; z < dims_.z(); ++z)
+    for (int y = 0; y < dims_.y(); ++y)
+      for (int x = 0; x < dims_.x(); ++x) {
+        float v = value(x, y, z);
+        // A voxel on a block boundary is a corner of the cells on both sides.
+        for (int bz = std::max(0, (z - 1) / kBlockCells);
+             bz <= std::min(block_dims_.z() - 1, z / kBlockCells); ++bz)
+          for (int by = std::max(0, (y - 1) / kBlockCells);
+               by <= std::min(block_dims_.y() - 1, y / kBlockCells); ++by)
+            for (int bx = std::max(0, (x - 1) / kBlockCells);
+                 bx <= std::min(block_dims_.x() - 1, x / kBlockCells); ++bx) {
+              float& minimum = block_minimum_[static_cast<size_t>(
+                  bx + block_dims_.x() * (by + block_dims_.y() * bz))];
+              minimum = std::min(minimum, v);
+            }
+      }
+}
+
+bool BodySdf::certainly_farther_than(const Eigen::Vector3d& point_m, double distance_m) const {
+  Eigen::Vector3i cell;
+  Eigen::Vector3d fraction;
+  if (!locate(point_m, cell, fraction)) return band_m_ >= distance_m;
+  Eigen::Vector3i block = cell / kBlockCells;
+  return block_minimum_[static_cast<size_t>(
+             block.x() + block_dims_.x() * (block.y() + block_dims_.y() * block.z()))] >=
+         distance_m;
 }
 
 bool BodySdf::contains(const Eigen::Vector3d& point_m) const {

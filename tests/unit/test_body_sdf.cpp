@@ -147,6 +147,29 @@ TEST(BodySdf, PushOutReachesTheClearance) {
   EXPECT_TRUE(centre.isZero());
 }
 
+TEST(BodySdf, CoarseBoundNeverClaimsMoreThanTheField) {
+  BodySdf sdf = sphere_sdf(icosphere(kRadius, 4));
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> radius(0, kRadius + 0.07);  // into and out of the box
+  int certain = 0, far_and_certain = 0, far = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Eigen::Vector3d p = random_point_at(random, radius(random));
+    for (double threshold : {-0.004, 0.0, 0.002, 0.008}) {
+      if (sdf.certainly_farther_than(p, threshold)) {
+        ++certain;
+        ASSERT_GE(sdf.distance(p), threshold) << p.transpose();
+      }
+    }
+    // Well clear of the sphere (two blocks of 8 voxels), the coarse test decides.
+    if (p.norm() > kRadius + 2 * 8 * kVoxel * std::sqrt(3.0)) {
+      ++far;
+      far_and_certain += sdf.certainly_farther_than(p, 0.002);
+    }
+  }
+  EXPECT_GT(certain, 10000);
+  EXPECT_EQ(far_and_certain, far);
+}
+
 TEST(BodySdf, SignSurvivesAHoleAndAWindingTurnedRound) {
   Mesh sphere = icosphere(kRadius, 4);
   BodySdf closed = sphere_sdf(sphere);
