@@ -53,13 +53,19 @@ double HairDensityField::value(int x, int y, int z) const {
                       static_cast<size_t>(dims_.y()) * static_cast<size_t>(z))];
 }
 
-double HairDensityField::density(const Vec3& point_m) const {
-  if (values_.empty()) return 0;
+HairDensityField::Located HairDensityField::locate(const Vec3& point_m) const {
   Vec3 u = (point_m - origin_m_) / cell_m_;
-  if (!u.allFinite()) return 0;
-  int x = static_cast<int>(std::floor(u.x())), y = static_cast<int>(std::floor(u.y())),
-      z = static_cast<int>(std::floor(u.z()));
-  Vec3 f(u.x() - x, u.y() - y, u.z() - z);
+  Located located;
+  for (int axis = 0; axis < 3; ++axis) {
+    located.cell[axis] = static_cast<int>(std::floor(u[axis]));
+    located.fraction[axis] = u[axis] - located.cell[axis];
+  }
+  return located;
+}
+
+double HairDensityField::density_at(const Located& point) const {
+  const int x = point.cell.x(), y = point.cell.y(), z = point.cell.z();
+  const Vec3& f = point.fraction;
   double sum = 0;
   for (int corner = 0; corner < 8; ++corner) {
     int dx = corner & 1, dy = (corner >> 1) & 1, dz = (corner >> 2) & 1;
@@ -67,6 +73,12 @@ double HairDensityField::density(const Vec3& point_m) const {
     sum += weight * value(x + dx, y + dy, z + dz);
   }
   return sum;
+}
+
+double HairDensityField::density(const Vec3& point_m) const {
+  if (values_.empty()) return 0;
+  if (!((point_m - origin_m_) / cell_m_).allFinite()) return 0;
+  return density_at(locate(point_m));
 }
 
 Vec3 HairDensityField::gradient_per_cell(const Vec3& point_m) const {
@@ -79,29 +91,17 @@ Vec3 HairDensityField::gradient_per_cell(const Vec3& point_m) const {
   return gradient;
 }
 
-void HairDensityField::locate(const Vec3& point_m, Eigen::Vector3i& cell, Vec3& fraction) const {
-  Vec3 u = (point_m - origin_m_) / cell_m_;
-  for (int axis = 0; axis < 3; ++axis) {
-    cell[axis] = static_cast<int>(std::floor(u[axis]));
-    fraction[axis] = u[axis] - cell[axis];
-  }
-}
-
-double HairDensityField::self_density(const Vec3& point_m, const Vec3& self_m) const {
-  Eigen::Vector3i cell_p, cell_s;
-  Vec3 f_p, f_s;
-  locate(point_m, cell_p, f_p);
-  locate(self_m, cell_s, f_s);
+double HairDensityField::self_density(const Located& point, const Located& self) {
   // Corners shared by the two cells: per axis, the sample's corner offset d in {0, 1}
   // matches the splat's offset d + cell_p - cell_s in {0, 1}.
   double sum = 1;
   for (int axis = 0; axis < 3; ++axis) {
     double axis_sum = 0;
     for (int d = 0; d < 2; ++d) {
-      int e = d + cell_p[axis] - cell_s[axis];
+      int e = d + point.cell[axis] - self.cell[axis];
       if (e < 0 || e > 1) continue;
-      double wp = d ? f_p[axis] : 1 - f_p[axis];
-      double ws = e ? f_s[axis] : 1 - f_s[axis];
+      double wp = d ? point.fraction[axis] : 1 - point.fraction[axis];
+      double ws = e ? self.fraction[axis] : 1 - self.fraction[axis];
       axis_sum += wp * ws;
     }
     sum *= axis_sum;
@@ -109,21 +109,39 @@ double HairDensityField::self_density(const Vec3& point_m, const Vec3& self_m) c
   return sum;
 }
 
+double HairDensityField::density_without_at(const Located& point,
+                                            std::span<const Located> own) const {
+  double value = density_at(point);
+  for (const Located& splat : own) value -= self_density(point, splat);
+  return value;
+}
+
+std::span<const HairDensityField::Located> HairDensityField::locate_own(
+    std::span<const Vec3> own_m, std::array<Located, kMaxOwn>& storage) const {
+  if (own_m.size() > kMaxOwn)
+    throw std::invalid_argument("hair density field: more than 8 own splats in a query");
+  for (size_t i = 0; i < own_m.size(); ++i) storage[i] = locate(own_m[i]);
+  return {storage.data(), own_m.size()};
+}
+
 double HairDensityField::density_without(const Vec3& point_m, std::span<const Vec3> own_m) const {
   if (values_.empty()) return 0;
-  double value = density(point_m);
-  for (const Vec3& own : own_m) value -= self_density(point_m, own);
-  return value;
+  if (!((point_m - origin_m_) / cell_m_).allFinite()) return 0;
+  std::array<Located, kMaxOwn> storage;
+  return density_without_at(locate(point_m), locate_own(own_m, storage));
 }
 
 Vec3 HairDensityField::gradient_per_cell_without(const Vec3& point_m,
                                                  std::span<const Vec3> own_m) const {
+  if (values_.empty() || !((point_m - origin_m_) / cell_m_).allFinite()) return Vec3::Zero();
+  std::array<Located, kMaxOwn> storage;
+  std::span<const Located> own = locate_own(own_m, storage);
   Vec3 gradient;
   for (int axis = 0; axis < 3; ++axis) {
     Vec3 step = Vec3::Zero();
     step[axis] = 0.5 * cell_m_;
-    gradient[axis] =
-        density_without(point_m + step, own_m) - density_without(point_m - step, own_m);
+    gradient[axis] = density_without_at(locate(point_m + step), own) -
+                     density_without_at(locate(point_m - step), own);
   }
   return gradient;
 }

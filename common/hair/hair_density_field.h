@@ -5,6 +5,7 @@
 // The simulation (hair_simulation.cpp) compares it with the density of the rest state.
 
 #include <Eigen/Core>
+#include <array>
 #include <span>
 #include <vector>
 
@@ -41,12 +42,25 @@ class HairDensityField {
   double mean_occupied_density() const;
 
  private:
+  /// A point's cell (its lower corner) and its fractions within it.
+  struct Located {
+    Eigen::Vector3i cell;
+    Eigen::Vector3d fraction;
+  };
+  /// At most this many own splats (a particle and its neighbours) per query.
+  static constexpr size_t kMaxOwn = 8;
+
   double value(int x, int y, int z) const;
-  /// The cell holding `point_m` (its lower corner) and the fractions within it.
-  void locate(const Eigen::Vector3d& point_m, Eigen::Vector3i& cell,
-              Eigen::Vector3d& fraction) const;
-  /// The trilinear weight that a splat at `self_m` gives the density sampled at `point_m`.
-  double self_density(const Eigen::Vector3d& point_m, const Eigen::Vector3d& self_m) const;
+  Located locate(const Eigen::Vector3d& point_m) const;
+  /// density() at a located point.
+  double density_at(const Located& point) const;
+  /// The trilinear weight that a splat at `self` gives the density sampled at `point`.
+  static double self_density(const Located& point, const Located& self);
+  /// density_at(point) less the own splats' weights there.
+  double density_without_at(const Located& point, std::span<const Located> own) const;
+  /// The own splats located, once per query (into `storage`).
+  std::span<const Located> locate_own(std::span<const Eigen::Vector3d> own_m,
+                                      std::array<Located, kMaxOwn>& storage) const;
 
   double cell_m_;
   Eigen::Vector3d origin_m_ = Eigen::Vector3d::Zero();
