@@ -425,36 +425,56 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       }
     }
   };
+  // Each strand's share of a frame's statistics, in parallel; summed in strand order, so
+  // the sums do not depend on the thread count.
+  struct StrandShare {
+    double kinetic_j = 0, gravity_j = 0, elastic_j = 0, max_speed_m_s = 0, strain = 0,
+           penetration_m = 0;
+    int64_t inside = 0, hair = 0;
+  };
+  std::vector<StrandShare> shares(running.size());
   auto frame_statistics = [&](double time_s, const RigidTransform& pose) {
-    FrameStatistics stats;
-    stats.time_s = time_s;
-    int64_t inside = 0, hair_total = 0;
-    for (RunningStrand& strand : running) {
+#pragma omp parallel for schedule(dynamic, 4) if (running.size() >= 32)
+    for (size_t g = 0; g < running.size(); ++g) {
+      RunningStrand& strand = running[g];
+      StrandShare share;
       const auto& x = strand.state.position_m;
       const auto& v = strand.state.velocity_m_s;
-      for (size_t k = 0; k < x.size(); ++k) {
-        stats.kinetic_energy_j += 0.5 * strand.model.mass_kg[k] * v[k].squaredNorm();
-      }
+      for (size_t k = 0; k < x.size(); ++k)
+        share.kinetic_j += 0.5 * strand.model.mass_kg[k] * v[k].squaredNorm();
       for (int32_t q : strand.model.hair_particle) {
         auto k = static_cast<size_t>(q);
-        stats.gravity_energy_j += strand.model.mass_kg[k] * params.gravity_m_s2 *
-                                  (x[k].y() - pose.apply(strand.model.rest_m[k]).y());
+        share.gravity_j += strand.model.mass_kg[k] * params.gravity_m_s2 *
+                           (x[k].y() - pose.apply(strand.model.rest_m[k]).y());
         if (!strand.frame_start_m.empty())
-          stats.max_speed_m_s =
-              std::max(stats.max_speed_m_s, (x[k] - strand.frame_start_m[k]).norm() * params.fps);
+          share.max_speed_m_s =
+              std::max(share.max_speed_m_s, (x[k] - strand.frame_start_m[k]).norm() * params.fps);
       }
-      stats.elastic_energy_j +=
-          strand_elastic_energy(strand.model, params.material, x, strand.anchors);
-      double strain = std::abs(max_hair_strain(strand.model, x));
-      stats.max_stretch = std::max(stats.max_stretch, strain);
-      stats.max_penetration_m = std::max(stats.max_penetration_m, strand.penetration_m);
+      share.elastic_j = strand_elastic_energy(strand.model, params.material, x, strand.anchors);
+      share.strain = std::abs(max_hair_strain(strand.model, x));
+      share.penetration_m = strand.penetration_m;
       strand.penetration_m = 0;
       if (body) {
         for (int32_t q : strand.model.hair_particle) {
-          ++hair_total;
-          if (body->distance(pose.apply_inverse(x[static_cast<size_t>(q)])) < 0) ++inside;
+          ++share.hair;
+          Vec3 rest = pose.apply_inverse(x[static_cast<size_t>(q)]);
+          if (!body->certainly_farther_than(rest, 0.0) && body->distance(rest) < 0) ++share.inside;
         }
       }
+      shares[g] = share;
+    }
+    FrameStatistics stats;
+    stats.time_s = time_s;
+    int64_t inside = 0, hair_total = 0;
+    for (const StrandShare& share : shares) {
+      stats.kinetic_energy_j += share.kinetic_j;
+      stats.gravity_energy_j += share.gravity_j;
+      stats.elastic_energy_j += share.elastic_j;
+      stats.max_speed_m_s = std::max(stats.max_speed_m_s, share.max_speed_m_s);
+      stats.max_stretch = std::max(stats.max_stretch, share.strain);
+      stats.max_penetration_m = std::max(stats.max_penetration_m, share.penetration_m);
+      inside += share.inside;
+      hair_total += share.hair;
     }
     stats.inside_fraction =
         hair_total ? static_cast<double>(inside) / static_cast<double>(hair_total) : 0.0;

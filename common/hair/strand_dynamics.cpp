@@ -1,6 +1,7 @@
 #include "hair/strand_dynamics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -33,23 +34,26 @@ double mean_mass(const AltitudeStrand& strand, const LinearSpring& spring) {
   return sum / spring.count;
 }
 
-double stiffness_per_kg(const StrandMaterial& material, SpringKind kind) {
-  switch (kind) {
-    case SpringKind::edge:
-      return material.edge_stiffness_per_kg;
-    case SpringKind::bend:
-      return material.bend_stiffness_per_kg;
-    case SpringKind::torsion:
-      return material.torsion_stiffness_per_kg;
+/// Stiffness and damping per kilogram of the three kinds of two-particle spring (edge,
+/// bend, torsion, in SpringKind's order) and of the altitudes: worked out once per pass,
+/// not once per spring (a square root each).
+struct SpringConstants {
+  std::array<double, 4> stiffness_per_kg{}, damping_per_kg{};
+  explicit SpringConstants(const StrandMaterial& material) {
+    stiffness_per_kg = {material.edge_stiffness_per_kg, material.bend_stiffness_per_kg,
+                        material.torsion_stiffness_per_kg, material.altitude_stiffness_per_kg};
+    for (size_t i = 0; i < 4; ++i)
+      damping_per_kg[i] = 2 * material.damping_ratio * std::sqrt(stiffness_per_kg[i]);
   }
-  return 0;
-}
+};
+constexpr size_t kAltitudeConstants = 3;
 
 /// Calls `visit(LinearSpring)` for every spring of the strand at `position_m`, anchors
 /// excluded; a spring of zero length (no direction) is left out.
 template <typename Visit>
 void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& material,
                      const std::vector<Vec3>& position_m, Visit&& visit) {
+  const SpringConstants constants(material);
   LinearSpring linear;
   linear.count = 2;
   for (const TwoParticleSpring& spring : strand.springs) {
@@ -64,10 +68,11 @@ void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& materia
     linear.direction = span / length;
     linear.length_m = length;
     linear.rest_length_m = spring.rest_length_m;
-    double mass = mean_mass(strand, linear);
-    double per_kg = stiffness_per_kg(material, spring.kind);
-    linear.stiffness = per_kg * mass;
-    linear.damping = 2 * material.damping_ratio * std::sqrt(per_kg) * mass;
+    double mass = 0.5 * (strand.mass_kg[static_cast<size_t>(spring.a)] +
+                         strand.mass_kg[static_cast<size_t>(spring.b)]);
+    auto kind = static_cast<size_t>(spring.kind);
+    linear.stiffness = constants.stiffness_per_kg[kind] * mass;
+    linear.damping = constants.damping_per_kg[kind] * mass;
     visit(linear);
   }
   linear.count = 4;
@@ -84,9 +89,8 @@ void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& materia
     linear.length_m = best.length_m;
     linear.rest_length_m = tetrahedron.rest_altitude_m[static_cast<size_t>(best_which)];
     double mass = mean_mass(strand, linear);
-    linear.stiffness = material.altitude_stiffness_per_kg * mass;
-    linear.damping =
-        2 * material.damping_ratio * std::sqrt(material.altitude_stiffness_per_kg) * mass;
+    linear.stiffness = constants.stiffness_per_kg[kAltitudeConstants] * mass;
+    linear.damping = constants.damping_per_kg[kAltitudeConstants] * mass;
     visit(linear);
   }
 }
@@ -139,14 +143,18 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     // A(i, j), i <= j, lives at band_[kd + i - j + j * ldab].
     // Adds scale * d d^T to the block (qa, qb), qa <= qb: the whole block lies in the
     // upper triangle when qa < qb, its upper half when qa == qb.
-    auto add_outer = [&](int32_t qa, int32_t qb, double scale, const Vec3& d) {
+    // `outer` holds d d^T (column-major) of the spring at hand.
+    auto add_outer = [&](int32_t qa, int32_t qb, double scale, const Eigen::Matrix3d& outer) {
       int row0 = 3 * (qa - first_free), col0 = 3 * (qb - first_free);
       for (int c = 0; c < 3; ++c) {
         int j = col0 + c;
-        double* column = band_.data() + kBandwidth - j + static_cast<ptrdiff_t>(j) * ldab;
-        double column_scale = scale * d[c];
-        int rows = qa == qb ? c + 1 : 3;
-        for (int r = 0; r < rows; ++r) column[row0 + r] += column_scale * d[r];
+        double* column = band_.data() + kBandwidth - j + static_cast<ptrdiff_t>(j) * ldab + row0;
+        const double* outer_column = outer.data() + 3 * c;
+        if (qa == qb) {
+          for (int r = 0; r <= c; ++r) column[r] += scale * outer_column[r];
+        } else {
+          for (int r = 0; r < 3; ++r) column[r] += scale * outer_column[r];
+        }
       }
     };
     auto add_rhs = [&](int32_t q, const Vec3& value) {
@@ -178,6 +186,7 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
       double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
       // Rate of the length from the known (kinematic) particles' velocities.
       double known_rate = known_velocity_sum ? spring.direction.dot(*known_velocity_sum) : 0.0;
+      const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
       for (int a = 0; a < spring.count; ++a) {
         int32_t qa = spring.particle[static_cast<size_t>(a)];
         double wa = spring.weight[static_cast<size_t>(a)];
@@ -191,9 +200,9 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
           if (qa < first_free || qb < first_free) continue;
           double coefficient = implicit * wa * spring.weight[static_cast<size_t>(b)];
           if (qa <= qb)
-            add_outer(qa, qb, coefficient, spring.direction);
+            add_outer(qa, qb, coefficient, outer);
           else
-            add_outer(qb, qa, coefficient, spring.direction);
+            add_outer(qb, qa, coefficient, outer);
         }
       }
     };
