@@ -66,11 +66,26 @@ HairDensityField::Located HairDensityField::locate(const Vec3& point_m) const {
 double HairDensityField::density_at(const Located& point) const {
   const int x = point.cell.x(), y = point.cell.y(), z = point.cell.z();
   const Vec3& f = point.fraction;
+  const double wx[2] = {1 - f.x(), f.x()}, wy[2] = {1 - f.y(), f.y()}, wz[2] = {1 - f.z(), f.z()};
+  if (x >= 0 && y >= 0 && z >= 0 && x + 1 < dims_.x() && y + 1 < dims_.y() && z + 1 < dims_.z()) {
+    // The whole cell inside the grid (the usual case): its corners by offsets, unchecked.
+    const size_t stride_y = static_cast<size_t>(dims_.x());
+    const size_t stride_z = stride_y * static_cast<size_t>(dims_.y());
+    const double* base = values_.data() + static_cast<size_t>(x) +
+                         stride_y * static_cast<size_t>(y) + stride_z * static_cast<size_t>(z);
+    double sum = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+      int dx = corner & 1, dy = (corner >> 1) & 1, dz = (corner >> 2) & 1;
+      sum += wx[dx] * wy[dy] * wz[dz] *
+             base[static_cast<size_t>(dx) + stride_y * static_cast<size_t>(dy) +
+                  stride_z * static_cast<size_t>(dz)];
+    }
+    return sum;
+  }
   double sum = 0;
   for (int corner = 0; corner < 8; ++corner) {
     int dx = corner & 1, dy = (corner >> 1) & 1, dz = (corner >> 2) & 1;
-    double weight = (dx ? f.x() : 1 - f.x()) * (dy ? f.y() : 1 - f.y()) * (dz ? f.z() : 1 - f.z());
-    sum += weight * value(x + dx, y + dy, z + dz);
+    sum += wx[dx] * wy[dy] * wz[dz] * value(x + dx, y + dy, z + dz);
   }
   return sum;
 }
