@@ -1,0 +1,87 @@
+// HairDensityField: the splat grid behind hair-hair repulsion (hair_density_field.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "hair/hair_density_field.h"
+
+namespace {
+
+using hair::HairDensityField;
+using Vec3 = Eigen::Vector3d;
+
+constexpr double kCell = 0.01;
+
+TEST(HairDensityField, OneSplatIsOneParticleWhereItIs) {
+  HairDensityField field(kCell);
+  Vec3 p(0.0123, -0.0456, 0.0789);
+  field.build({p});
+  // The grid starts two cells below the lowest particle, so a lone particle sits on a
+  // grid node and reads its whole weight there.
+  EXPECT_NEAR(field.density(p), 1.0, 1e-9);
+  // Half a cell off along x, the trilinear sample reads half.
+  EXPECT_NEAR(field.density(p + Vec3(0.5 * kCell, 0, 0)), 0.5, 1e-9);
+  EXPECT_EQ(field.density(p + Vec3(0.5, 0, 0)), 0.0);  // outside the grid
+  // Its own splat removed, nothing is left.
+  std::vector<Vec3> own{p};
+  EXPECT_NEAR(field.density_without(p, own), 0.0, 1e-12);
+  EXPECT_NEAR(field.density_without(p + Vec3(0.004, -0.003, 0.002), own), 0.0, 1e-12);
+  EXPECT_LT(field.gradient_per_cell_without(p, own).norm(), 1e-12);
+}
+
+TEST(HairDensityField, GradientPointsTowardTheCrowd) {
+  // A crowd of particles around the origin; the density falls away from it, so the
+  // gradient at a point beside the crowd points back at it.
+  std::mt19937 random(3);
+  std::normal_distribution<double> spread(0, 0.01);
+  std::vector<Vec3> crowd;
+  for (int i = 0; i < 2000; ++i) crowd.emplace_back(spread(random), spread(random), spread(random));
+  HairDensityField field(kCell);
+  field.build(crowd);
+  for (const Vec3& beside : {Vec3(0.02, 0, 0), Vec3(0, -0.015, 0.01), Vec3(-0.01, 0.01, -0.01)}) {
+    Vec3 gradient = field.gradient_per_cell(beside);
+    EXPECT_LT(gradient.normalized().dot(beside.normalized()), -0.8) << beside.transpose();
+    EXPECT_GT(field.density(Vec3::Zero()), field.density(beside));
+  }
+  EXPECT_GT(field.mean_occupied_density(), 1.0);
+}
+
+TEST(HairDensityField, OwnSplatsAreTakenOutExactly) {
+  // The density without a particle's splat equals the density of a grid built without it,
+  // wherever it is sampled within reach (the same grid lattice: the far particles fix the
+  // box).
+  std::vector<Vec3> others{Vec3(-0.05, -0.05, -0.05), Vec3(0.05, 0.05, 0.05),
+                           Vec3(0.003, 0.001, 0.002)};
+  std::vector<Vec3> with = others;
+  Vec3 mine(0.0071, 0.0042, -0.0013);
+  with.push_back(mine);
+  HairDensityField all(kCell), without(kCell);
+  all.build(with);
+  without.build(others);
+  std::vector<Vec3> own{mine};
+  for (const Vec3& sample : {mine, Vec3(0.005, 0.002, 0.0), Vec3(0.01, 0.0, -0.004)}) {
+    EXPECT_NEAR(all.density_without(sample, own), without.density(sample), 1e-12);
+    EXPECT_LT(
+        (all.gradient_per_cell_without(sample, own) - without.gradient_per_cell(sample)).norm(),
+        1e-12);
+  }
+}
+
+TEST(HairDensityField, EmptyAndNonFiniteInputs) {
+  HairDensityField field(kCell);
+  field.build({});
+  EXPECT_EQ(field.density(Vec3::Zero()), 0.0);
+  EXPECT_EQ(field.mean_occupied_density(), 0.0);
+  EXPECT_TRUE(field.gradient_per_cell(Vec3::Zero()).isZero());
+  // Non-finite particles are left out of the grid.
+  field.build({Vec3(0, 0, 0), Vec3(std::nan(""), 0, 0)});
+  EXPECT_GT(field.density(Vec3::Zero()), 0.0);
+  EXPECT_EQ(field.density(Vec3(std::nan(""), 0, 0)), 0.0);
+  // A spread beyond 4096 cells is refused rather than allocated.
+  EXPECT_THROW(field.build({Vec3::Zero(), Vec3(100, 0, 0)}), std::runtime_error);
+}
+
+}  // namespace
