@@ -37,11 +37,12 @@ struct GraphClusteringParams {
   /// streams, and on the complete graph spectral clustering cuts the braid across
   /// instead of separating its streams.
   int continuations = 1;
-  /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight. 0.012 at
-  /// the first level (w is mostly 0.9 f1: a gap of about 0.013 H, 3 mm on MakeHuman),
-  /// so that one weak false link between two chains of pieces is cut by the eigengap
-  /// (docs/clustering.md); the median at the second level.
-  double affinity_scale = 0.012;
+  /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight. 0.02 at
+  /// the first level (w is mostly 0.85 f4: an offset of about 0.024 H, 6 mm on
+  /// MakeHuman, near the bound f4_max), so that a weak false link between two chains of
+  /// pieces is cut by the eigengap (docs/clustering.md: the synthetic braids score alike
+  /// for sigma from 0.016 to 0.025); the median at the second level.
+  double affinity_scale = 0.02;
   SpectralParams spectral;
 };
 
@@ -69,6 +70,14 @@ struct HairClusteringParams {
   HairClusteringParams() {
     graph.continuations = 0;
     graph.affinity_scale = 0;
+    // The paper's three criteria, f1 first, and no continuation offset: between regions
+    // of hair the end gap is what counts.
+    ConnectivityParams& c = graph.connectivity;
+    c.k1 = 0.9;
+    c.k2 = 0.05;
+    c.k3 = 0.05;
+    c.k4 = 0;
+    c.f4_max = 1;
   }
   GraphClusteringParams graph;
   SimilarityParams similarity;
