@@ -32,13 +32,14 @@ enum class Closeness {
 /// the best connection. Outside the bounds the weight is infinite: no edge.
 ///
 /// The defaults are the first level's (cluster-middle): mostly f4, which tells a
-/// stream's own continuation from a piece of another stream that starts as close
-/// (docs/clustering.md). HairClusteringParams sets the second level's.
+/// stream's own continuation from a piece of another stream that starts as close, and
+/// f1, which among pieces that all continue the flow (the tails below a ponytail's band)
+/// prefers the nearest (docs/clustering.md). HairClusteringParams sets the second level's.
 struct ConnectivityParams {
-  double k1 = 0.05;      ///< coefficient of f1 (closeness at the connection)
+  double k1 = 0.2;       ///< coefficient of f1 (closeness at the connection)
   double k2 = 0.05;      ///< coefficient of f2 (overlap)
   double k3 = 0.05;      ///< coefficient of f3 (flow angle)
-  double k4 = 0.85;      ///< coefficient of f4 (continuation offset); k1 + k2 + k3 + k4 = 1
+  double k4 = 0.7;       ///< coefficient of f4 (continuation offset); k1 + k2 + k3 + k4 = 1
   double f1_max = 0.25;  ///< the paper's bound H/4, f1 being in units of H
   double f2_max = 0.5;   ///< the paper's bound
   /// The paper's bound is 0.3 (54 degrees); consecutive pieces of a tight braid turn by

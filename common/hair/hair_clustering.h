@@ -38,10 +38,11 @@ struct GraphClusteringParams {
   /// instead of separating its streams.
   int continuations = 1;
   /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight. 0.02 at
-  /// the first level (w is mostly 0.85 f4: an offset of about 0.024 H, 6 mm on
-  /// MakeHuman, near the bound f4_max), so that a weak false link between two chains of
-  /// pieces is cut by the eigengap (docs/clustering.md: the synthetic braids score alike
-  /// for sigma from 0.016 to 0.025); the median at the second level.
+  /// the first level, where w is mostly 0.7 f4 + 0.2 f1 (an offset near the bound f4_max
+  /// with a gap of 0.03 H gives about 0.02; 0.03 H is 7 mm on MakeHuman), so that a weak
+  /// false link between two chains of pieces is still cut by the eigengap
+  /// (docs/clustering.md: the synthetic braids score alike for any sigma from 0.016 to
+  /// 0.04); the median at the second level.
   double affinity_scale = 0.02;
   SpectralParams spectral;
 };
