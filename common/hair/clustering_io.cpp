@@ -81,7 +81,7 @@ void write_middle_file(h5::File& file, const MiddleClustering& clustering, doubl
   for (const auto& f : clustering.graph.features)
     features.insert(features.end(), f.begin(), f.end());
   h5::write_dataset(file, "/graph/f", features,
-                    {static_cast<int64_t>(clustering.graph.features.size()), 3});
+                    {static_cast<int64_t>(clustering.graph.features.size()), 4});
   write_graph(file, clustering.graph, clustering.eigenvalues);
 }
 

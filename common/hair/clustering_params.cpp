@@ -13,11 +13,19 @@ void add_graph_clustering_params(ParamSet& params, GraphClusteringParams& values
   params.add("k2", c.k2, "coefficient of f2, the overlap of two groups", ParamRange::closed(0, 1));
   params.add("k3", c.k3, "coefficient of f3, the angle between the flows at the connection",
              ParamRange::closed(0, 1));
+  params.add("k4", c.k4,
+             "coefficient of f4, the continuation offset: how far each group's end lies off "
+             "the line of the other's flow at the connection",
+             ParamRange::closed(0, 1));
   params.add("f1_max", c.f1_max, "no edge when f1 (in H) reaches this bound", ParamRange::above(0));
   params.add("f2_max", c.f2_max, "no edge when the overlap f2 reaches this bound",
              ParamRange::above(0));
   params.add("f3_max", c.f3_max, "no edge when the flow angle f3 (in pi) reaches this bound",
              ParamRange::closed(0, 1));
+  params.add("f4_max", c.f4_max,
+             "no edge when the continuation offset f4 (in H) reaches this bound (f1_max or "
+             "more: none, with closeness = ends)",
+             ParamRange::above(0));
   params.add("closeness", values.closeness_word,
              "f1 as the closest approach of one group's distal half to the other's proximal "
              "half (halves, the paper's) or as the gap between the end and the start (ends)",
@@ -65,8 +73,9 @@ void add_graph_clustering_params(ParamSet& params, GraphClusteringParams& values
     return std::nullopt;
   });
   params.add_check([&c]() -> std::optional<std::string> {
-    double sum = c.k1 + c.k2 + c.k3;
-    if (std::abs(sum - 1) > 1e-6) return "k1 + k2 + k3 must be 1, found " + std::to_string(sum);
+    double sum = c.k1 + c.k2 + c.k3 + c.k4;
+    if (std::abs(sum - 1) > 1e-6)
+      return "k1 + k2 + k3 + k4 must be 1, found " + std::to_string(sum);
     return std::nullopt;
   });
 }

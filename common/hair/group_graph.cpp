@@ -7,7 +7,7 @@
 namespace hair {
 
 void GroupGraph::add_edge(int32_t a, int32_t b, double edge_weight, EdgeKind edge_kind,
-                          std::array<float, 3> edge_features) {
+                          std::array<float, 4> edge_features) {
   edges.push_back({std::min(a, b), std::max(a, b)});
   weight.push_back(edge_weight);
   kind.push_back(edge_kind);

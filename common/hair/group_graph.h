@@ -19,14 +19,14 @@ struct GroupGraph {
   int32_t node_count = 0;
   std::vector<std::array<int32_t, 2>> edges;
   std::vector<double> weight;                  ///< per edge, after the local-similarity halving
-  std::vector<std::array<float, 3>> features;  ///< f1, f2, f3 per edge (0 for similarity edges)
+  std::vector<std::array<float, 4>> features;  ///< f1-f4 per edge (0 for similarity edges)
   std::vector<EdgeKind> kind;                  ///< per edge
   std::vector<double> affinity;                ///< per edge, set by set_affinities()
   double affinity_scale = 0;                   ///< sigma, set by set_affinities()
 
   /// Adds an edge; `a` != `b`.
   void add_edge(int32_t a, int32_t b, double edge_weight, EdgeKind edge_kind,
-                std::array<float, 3> edge_features = {0, 0, 0});
+                std::array<float, 4> edge_features = {0, 0, 0, 0});
   /// Sets affinity = exp(-w^2 / (2 sigma^2)) for every edge, sigma = `scale` when it is
   /// positive, else the median of the edge weights (1 without edges, and a floor of
   /// 1e-6 so that a graph of perfect connections keeps finite affinities).

@@ -21,6 +21,14 @@ Eigen::Vector3d point(const Eigen::Ref<const Points3f>& strand, Eigen::Index row
 
 }  // namespace
 
+double offset_from_line(const Eigen::Vector3d& point, const Eigen::Vector3d& origin,
+                        const Eigen::Vector3d& direction) {
+  Eigen::Vector3d offset = point - origin;
+  double length2 = direction.squaredNorm();
+  if (length2 <= 0) return offset.norm();
+  return (offset - offset.dot(direction) / length2 * direction).norm();
+}
+
 int farthest_from_chord(const Eigen::Ref<const Points3f>& centre) {
   auto points = static_cast<int>(centre.rows());
   if (points < 3) return points - 1;
@@ -80,14 +88,22 @@ ConnectionFeatures connection_features(const Eigen::Ref<const Points3f>& a,
   Eigen::Vector3d root_leaving = point(root, root_points - 1) - point(root, root_flow_from);
   Eigen::Vector3d tip_entering = point(tip, tip_flow_to) - point(tip, 0);
   features.f3 = angle_between(root_leaving, tip_entering) / std::numbers::pi;
+
+  // f4: each end off the line of the other's flow at the connection.
+  Eigen::Vector3d root_end = point(root, root_points - 1), tip_start = point(tip, 0);
+  features.f4 = (offset_from_line(tip_start, root_end, root_leaving) +
+                 offset_from_line(root_end, tip_start, tip_entering)) /
+                (2 * head_height_m);
   return features;
 }
 
 std::optional<double> connectivity_weight(const ConnectionFeatures& features,
                                           const ConnectivityParams& params) {
-  if (!(features.f1 < params.f1_max && features.f2 < params.f2_max && features.f3 < params.f3_max))
+  if (!(features.f1 < params.f1_max && features.f2 < params.f2_max && features.f3 < params.f3_max &&
+        features.f4 < params.f4_max))
     return std::nullopt;
-  return params.k1 * features.f1 + params.k2 * features.f2 + params.k3 * features.f3;
+  return params.k1 * features.f1 + params.k2 * features.f2 + params.k3 * features.f3 +
+         params.k4 * features.f4;
 }
 
 std::optional<double> similarity_weight(const Eigen::Ref<const Points3f>& a,

@@ -133,7 +133,7 @@ void add_connectivity_edges(GroupGraph& graph, const StrandSet& centres,
     const ConnectionFeatures& features = connections[weighted.second].features;
     graph.add_edge(key.first, key.second, weighted.first, EdgeKind::connectivity,
                    {static_cast<float>(features.f1), static_cast<float>(features.f2),
-                    static_cast<float>(features.f3)});
+                    static_cast<float>(features.f3), static_cast<float>(features.f4)});
   }
 }
 

@@ -37,11 +37,13 @@ struct GraphClusteringParams {
   /// streams, and on the complete graph spectral clustering cuts the braid across
   /// instead of separating its streams.
   int continuations = 1;
-  /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight. 0.012 at
-  /// the first level (w is mostly 0.9 f1: a gap of about 0.013 H, 3 mm on MakeHuman),
-  /// so that one weak false link between two chains of pieces is cut by the eigengap
-  /// (docs/clustering.md); the median at the second level.
-  double affinity_scale = 0.012;
+  /// sigma of the affinity exp(-w^2 / (2 sigma^2)); 0: the median edge weight. 0.02 at
+  /// the first level, where w is mostly 0.7 f4 + 0.2 f1 (an offset near the bound f4_max
+  /// with a gap of 0.03 H gives about 0.02; 0.03 H is 7 mm on MakeHuman), so that a weak
+  /// false link between two chains of pieces is still cut by the eigengap
+  /// (docs/clustering.md: the synthetic braids score alike for any sigma from 0.016 to
+  /// 0.04); the median at the second level.
+  double affinity_scale = 0.02;
   SpectralParams spectral;
 };
 
@@ -69,6 +71,14 @@ struct HairClusteringParams {
   HairClusteringParams() {
     graph.continuations = 0;
     graph.affinity_scale = 0;
+    // The paper's three criteria, f1 first, and no continuation offset: between regions
+    // of hair the end gap is what counts.
+    ConnectivityParams& c = graph.connectivity;
+    c.k1 = 0.9;
+    c.k2 = 0.05;
+    c.k3 = 0.05;
+    c.k4 = 0;
+    c.f4_max = 1;
   }
   GraphClusteringParams graph;
   SimilarityParams similarity;

@@ -163,12 +163,14 @@ TEST(SynthClustering, AdjustedRandIndexPerPreset) {
   all.print("all");
   held_out_braided.print("braided, 4-6");
   held_out_all.print("all, seeds 4-6");
-  // Measured (docs/clustering.md): middle ARI 0.82 over the braided presets, 0.80 over
-  // all; held out: 0.81 and 0.84. Floors that catch a broken clustering, not the target
-  // (0.9, not reached).
-  EXPECT_GT(braided.middle.mean(), 0.7);
-  EXPECT_GT(all.middle.mean(), 0.7);
-  EXPECT_GT(held_out_braided.middle.mean(), 0.7);
+  // Measured (docs/clustering.md): middle ARI 0.909 over the braided presets, 0.846 over
+  // all; held out: 0.936 and 0.939 (before the continuation offset f4: 0.82, 0.80, 0.81,
+  // 0.84). Floors that catch a broken clustering, a little under the figures: one
+  // false link between two streams can take a model from 1.0 to 0.56 (braid seed 1
+  // before f4), 0.05 of the braided mean.
+  EXPECT_GT(braided.middle.mean(), 0.85);
+  EXPECT_GT(all.middle.mean(), 0.75);
+  EXPECT_GT(held_out_braided.middle.mean(), 0.85);
 }
 
 }  // namespace
