@@ -207,6 +207,20 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
       }
     };
     for_each_spring(strand, material, x, [&](const LinearSpring& spring) {
+      if (spring.count == 2 && spring.particle[0] >= first_free) {
+        // Most springs: two free particles, weights -1 and 1 (add_spring, unrolled).
+        const int32_t qa = spring.particle[0], qb = spring.particle[1];
+        const double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
+        const Vec3 force = (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m)) *
+                           spring.direction;
+        add_rhs(qa, -force);
+        add_rhs(qb, force);
+        const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
+        add_outer(qa, qa, implicit, outer);
+        add_outer(qa, qb, -implicit, outer);
+        add_outer(qb, qb, implicit, outer);
+        return;
+      }
       // Sum of weight * velocity over the spring's kinematic particles.
       Vec3 known = Vec3::Zero();
       bool any_known = false;
