@@ -319,9 +319,8 @@ HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupTyp
   // a root-type group that continues another group of its cluster is one of the others.
   result.continues_group.assign(group_count, 0);
   if (params.split_at_type_change && params.split_continued_roots)
-    result.continues_group = continuing_roots(centres, types, s2_node_of_group,
-                                              result.cluster_before_split, head_height_m,
-                                              params.graph);
+    result.continues_group = continuing_roots(
+        centres, types, s2_node_of_group, result.cluster_before_split, head_height_m, params.graph);
   auto side_of = [&](size_t g) {
     return is_root_type(types[g]) && !result.continues_group[g] ? 0 : 1;
   };

@@ -153,7 +153,8 @@ TEST(HairClustering, ARootTypedStripThatContinuesTheCapIsDividedFromIt) {
   // A strip that starts beyond the f1 bound of the cap's end is no continuation.
   Scene apart = scene;
   std::vector<Points3f> pieces;
-  for (int64_t g = 0; g < scene.centres.strand_count(); ++g) pieces.push_back(scene.centres.strand(g));
+  for (int64_t g = 0; g < scene.centres.strand_count(); ++g)
+    pieces.push_back(scene.centres.strand(g));
   pieces[0] = piece({0, 0.1f, 0}, {0, 0.06f, 0});  // 13 cm above the strip: beyond H / 4
   apart.centres = strand_set_from_polylines(pieces);
   HairClustering far = cluster_hair(apart.centres, apart.types, middle.middle_cluster, kHeadHeight,
