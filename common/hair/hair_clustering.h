@@ -84,13 +84,17 @@ struct HairClusteringParams {
   SimilarityParams similarity;
   /// Divide a cluster where the type changes from root to another type (section 4.3).
   bool split_at_type_change = true;
-  /// In that division, a root-type group whose first point continues another group of its
-  /// cluster (a connection within the connectivity bounds joins that group's end to this
-  /// group's start) goes with the distal part: typeify found nothing within its reach
+  /// In that division, a root-type group of S2 whose first point continues another group
+  /// of its cluster (a connection within the connectivity bounds joins that group's end to
+  /// this group's start) goes with the distal part: typeify found nothing within its reach
   /// (0.08 H) before it, but at this level's reach (f1_max) it continues a chain, so it does
-  /// not start at the root. braid01: a braid stream whose strips start 3-4 cm below the cap
-  /// groups that run into it is typed root_connected, and without this stays with the cap.
-  bool split_continued_roots = true;
+  /// not start at the root. braid01: one braid stream, whose strips start 0.16 H below the
+  /// cap groups that run into it, is typed root_connected and stays with the cap without
+  /// this. Off by default: grow roots strands at every root-type group and seeds each
+  /// cluster's field from them, so with it on braid01's braid cluster gets 88% of its
+  /// strands rooted at the nape and classify reads it normal, and grow's fields no longer
+  /// bridge the wide gaps of the synthetic layered presets (docs/clustering.md, "Not done").
+  bool split_continued_roots = false;
 };
 
 /// Result of the second level: every group in a hair cluster (section 4.3).

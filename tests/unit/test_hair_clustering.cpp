@@ -132,8 +132,10 @@ TEST(HairClustering, ARootTypedStripThatContinuesTheCapIsDividedFromIt) {
   Scene scene = cap_then_rooted_strip();
   MiddleClustering middle =
       cluster_middle_groups(scene.centres, scene.types, kHeadHeight, GraphClusteringParams{});
-  HairClustering hair = cluster_hair(scene.centres, scene.types, middle.middle_cluster, kHeadHeight,
-                                     HairClusteringParams{});
+  HairClusteringParams continued;
+  continued.split_continued_roots = true;
+  HairClustering hair =
+      cluster_hair(scene.centres, scene.types, middle.middle_cluster, kHeadHeight, continued);
   ASSERT_EQ(hair.clusters_before_split, 1);
   EXPECT_EQ(hair.split_count, 1);
   // The cap alone at the root; the strip goes with the middle pieces and the tip.
@@ -142,11 +144,9 @@ TEST(HairClustering, ARootTypedStripThatContinuesTheCapIsDividedFromIt) {
   EXPECT_EQ(hair.cluster_starts_at_root, (std::vector<uint8_t>{1, 0}));
   EXPECT_EQ(hair.cluster_group_count, (std::vector<int32_t>{1, 5}));
 
-  // Without the rule the strip, a root type, stays with the cap: the division of before.
-  HairClusteringParams by_type_only;
-  by_type_only.split_continued_roots = false;
-  HairClustering before =
-      cluster_hair(scene.centres, scene.types, middle.middle_cluster, kHeadHeight, by_type_only);
+  // Without the rule (the default) the strip, a root type, stays with the cap.
+  HairClustering before = cluster_hair(scene.centres, scene.types, middle.middle_cluster,
+                                       kHeadHeight, HairClusteringParams{});
   EXPECT_EQ(before.cluster, (std::vector<int32_t>{0, 0, 1, 1, 1, 1}));
   EXPECT_EQ(before.continues_group, (std::vector<uint8_t>(6, 0)));
 
@@ -157,8 +157,8 @@ TEST(HairClustering, ARootTypedStripThatContinuesTheCapIsDividedFromIt) {
     pieces.push_back(scene.centres.strand(g));
   pieces[0] = piece({0, 0.1f, 0}, {0, 0.06f, 0});  // 13 cm above the strip: beyond H / 4
   apart.centres = strand_set_from_polylines(pieces);
-  HairClustering far = cluster_hair(apart.centres, apart.types, middle.middle_cluster, kHeadHeight,
-                                    HairClusteringParams{});
+  HairClustering far =
+      cluster_hair(apart.centres, apart.types, middle.middle_cluster, kHeadHeight, continued);
   EXPECT_EQ(far.continues_group, (std::vector<uint8_t>(6, 0)));
 }
 
