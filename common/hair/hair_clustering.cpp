@@ -137,6 +137,40 @@ void add_connectivity_edges(GroupGraph& graph, const StrandSet& centres,
   }
 }
 
+/// Per group: 1 for a root-type group of S2 (`s2_node_of_group` >= 0) whose first point
+/// continues another S2 group of its cluster: some group h of the same cluster, in either
+/// orientation when params.either_orientation, is c^r of a connection within the bounds
+/// whose c^t is this group as extract oriented it (its first point, the root typeify
+/// judged, meets h's end).
+std::vector<uint8_t> continuing_roots(const StrandSet& centres, const std::vector<GroupType>& types,
+                                      const std::vector<int32_t>& s2_node_of_group,
+                                      const std::vector<int32_t>& cluster, double head_height_m,
+                                      const GraphClusteringParams& params) {
+  std::vector<uint8_t> continues(types.size(), 0);
+  std::vector<Bounds> bounds = centre_bounds(centres);
+  auto reach_m = static_cast<float>(params.connectivity.f1_max * head_height_m);
+  int directions = params.either_orientation ? 2 : 1;
+  for (size_t g = 0; g < types.size(); ++g) {
+    if (!is_root_type(types[g]) || s2_node_of_group[g] < 0) continue;
+    auto root_group = centres.strand(static_cast<int64_t>(g));
+    for (size_t h = 0; h < types.size() && !continues[g]; ++h) {
+      if (h == g || s2_node_of_group[h] < 0 || cluster[h] != cluster[g] ||
+          bounds_gap(bounds[g], bounds[h]) >= reach_m)
+        continue;
+      for (int h_reversed = 0; h_reversed < directions && !continues[g]; ++h_reversed) {
+        Points3f before = centres.strand(static_cast<int64_t>(h));
+        if (h_reversed) before = before.colwise().reverse().eval();
+        ConnectionFeatures features =
+            connection_features(before, root_group, head_height_m,
+                                params.connectivity.flow_direction, params.connectivity.closeness);
+        continues[g] = features.first_is_root_side &&
+                       connectivity_weight(features, params.connectivity).has_value();
+      }
+    }
+  }
+  return continues;
+}
+
 ClusterCountSource source_of(const SpectralParams& params) {
   return params.clusters > 0 ? ClusterCountSource::parameter : ClusterCountSource::eigengap;
 }
@@ -281,12 +315,20 @@ HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupTyp
   for (size_t g = 0; g < group_count; ++g)
     result.cluster_before_split[g] = spectral.label[static_cast<size_t>(result.node_of_group[g])];
 
-  // The division: the root-type groups of a cluster apart from its other groups.
+  // The division: the root-type groups of a cluster apart from its other groups, where
+  // a root-type group that continues another group of its cluster is one of the others.
+  result.continues_group.assign(group_count, 0);
+  if (params.split_at_type_change && params.split_continued_roots)
+    result.continues_group = continuing_roots(
+        centres, types, s2_node_of_group, result.cluster_before_split, head_height_m, params.graph);
+  auto side_of = [&](size_t g) {
+    return is_root_type(types[g]) && !result.continues_group[g] ? 0 : 1;
+  };
   std::map<std::pair<int32_t, int>, int32_t> final_cluster;  // (cluster, 0 root / 1 rest)
   std::vector<std::array<bool, 2>> parts(static_cast<size_t>(spectral.cluster_count),
                                          {false, false});
   for (size_t g = 0; g < group_count; ++g)
-    parts[static_cast<size_t>(result.cluster_before_split[g])][is_root_type(types[g]) ? 0 : 1] =
+    parts[static_cast<size_t>(result.cluster_before_split[g])][static_cast<size_t>(side_of(g))] =
         true;
   for (int32_t c = 0; c < spectral.cluster_count; ++c) {
     const auto& part = parts[static_cast<size_t>(c)];
@@ -306,7 +348,7 @@ HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupTyp
     int32_t c = result.cluster_before_split[g];
     const auto& part = parts[static_cast<size_t>(c)];
     bool divided = params.split_at_type_change && part[0] && part[1];
-    int side = divided ? (is_root_type(types[g]) ? 0 : 1) : (part[0] ? 0 : 1);
+    int side = divided ? side_of(g) : (part[0] ? 0 : 1);
     result.cluster[g] = final_cluster.at({c, side});
     ++result.cluster_group_count[static_cast<size_t>(result.cluster[g])];
   }

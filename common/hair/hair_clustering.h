@@ -84,6 +84,17 @@ struct HairClusteringParams {
   SimilarityParams similarity;
   /// Divide a cluster where the type changes from root to another type (section 4.3).
   bool split_at_type_change = true;
+  /// In that division, a root-type group of S2 whose first point continues another group
+  /// of its cluster (a connection within the connectivity bounds joins that group's end to
+  /// this group's start) goes with the distal part: typeify found nothing within its reach
+  /// (0.08 H) before it, but at this level's reach (f1_max) it continues a chain, so it does
+  /// not start at the root. braid01: one braid stream, whose strips start 0.16 H below the
+  /// cap groups that run into it, is typed root_connected and stays with the cap without
+  /// this. Off by default: grow roots strands at every root-type group and seeds each
+  /// cluster's field from them, so with it on braid01's braid cluster gets 88% of its
+  /// strands rooted at the nape and classify reads it normal, and grow's fields no longer
+  /// bridge the wide gaps of the synthetic layered presets (docs/clustering.md, "Not done").
+  bool split_continued_roots = false;
 };
 
 /// Result of the second level: every group in a hair cluster (section 4.3).
@@ -96,6 +107,9 @@ struct HairClustering {
   std::vector<int32_t> cluster_origin;          ///< per final cluster: its cluster before split
   std::vector<uint8_t> cluster_starts_at_root;  ///< per final cluster
   std::vector<int32_t> cluster_group_count;     ///< per final cluster
+  /// per group: a root-type group that continues another group of its cluster, counted
+  /// with the distal part (split_continued_roots)
+  std::vector<uint8_t> continues_group;
   int32_t clusters_before_split = 0;
   int32_t split_count = 0;
   ClusterCountSource count_source = ClusterCountSource::skipped;
@@ -107,7 +121,9 @@ struct HairClustering {
 /// tip group, and each middle cluster (S2). S1-S1 edges by similarity (equations 4-5),
 /// S2-S2 edges by connectivity (1-3; between nodes of several groups the smallest
 /// weight of their groups' pairs), no S1-S2 edges. Then spectral clustering and the
-/// division of clusters at the change from root-type groups to the others.
+/// division of clusters at the change from root-type groups to the others (a root-type
+/// group of S2 that continues another group of its cluster counts as one of the others:
+/// HairClusteringParams::split_continued_roots).
 ///
 /// @param middle_cluster  per group, from cluster_middle_groups(); every middle group
 ///                        must have one (each_middle_group_alone() for one level only)

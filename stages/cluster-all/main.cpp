@@ -27,6 +27,11 @@ int main(int argc, char** argv) {
                    hair::ParamRange::above(0));
   app.params().add("split_at_type_change", params.split_at_type_change,
                    "divide a cluster where its root-type groups meet its other groups");
+  app.params().add(
+      "split_continued_roots", params.split_continued_roots,
+      "in that division, a root-type group whose start continues another group of "
+      "its cluster (within the connectivity bounds) goes with the distal part (off: grow "
+      "still roots strands at such groups, docs/clustering.md)");
 
   return app.run(argc, argv, [&] {
     hair::TypedGroups groups = hair::read_typed_groups(hair::h5::File::open_read_only(types_path));

@@ -108,6 +108,60 @@ TEST(HairClustering, StreamsThenTheCapsDividedFromThem) {
   EXPECT_EQ(undivided.split_count, 0);
 }
 
+/// One stream as braid01's: a 4 cm cap (root_connected), a gap of 3 cm (beyond typeify's
+/// reach of 0.08 H, within cluster-all's f1 bound of H / 4), then a 10 cm strip that typeify
+/// typed root_connected too, three 4 cm middle pieces and a 4 cm tip, 5 mm apart.
+Scene cap_then_rooted_strip() {
+  Scene scene;
+  std::vector<Points3f> pieces;
+  pieces.push_back(piece({0, 0, 0}, {0, -0.04f, 0}));
+  scene.types.push_back(GroupType::root_connected);
+  pieces.push_back(piece({0, -0.07f, 0}, {0, -0.17f, 0}));
+  scene.types.push_back(GroupType::root_connected);
+  float top = -0.175f;
+  for (int p = 0; p < 4; ++p, top -= 0.045f) {
+    pieces.push_back(piece({0, top, 0}, {0, top - 0.04f, 0}));
+    scene.types.push_back(p == 3 ? GroupType::tip : GroupType::middle);
+  }
+  scene.stream.assign(scene.types.size(), 0);
+  scene.centres = strand_set_from_polylines(pieces);
+  return scene;
+}
+
+TEST(HairClustering, ARootTypedStripThatContinuesTheCapIsDividedFromIt) {
+  Scene scene = cap_then_rooted_strip();
+  MiddleClustering middle =
+      cluster_middle_groups(scene.centres, scene.types, kHeadHeight, GraphClusteringParams{});
+  HairClusteringParams continued;
+  continued.split_continued_roots = true;
+  HairClustering hair =
+      cluster_hair(scene.centres, scene.types, middle.middle_cluster, kHeadHeight, continued);
+  ASSERT_EQ(hair.clusters_before_split, 1);
+  EXPECT_EQ(hair.split_count, 1);
+  // The cap alone at the root; the strip goes with the middle pieces and the tip.
+  EXPECT_EQ(hair.continues_group, (std::vector<uint8_t>{0, 1, 0, 0, 0, 0}));
+  EXPECT_EQ(hair.cluster, (std::vector<int32_t>{0, 1, 1, 1, 1, 1}));
+  EXPECT_EQ(hair.cluster_starts_at_root, (std::vector<uint8_t>{1, 0}));
+  EXPECT_EQ(hair.cluster_group_count, (std::vector<int32_t>{1, 5}));
+
+  // Without the rule (the default) the strip, a root type, stays with the cap.
+  HairClustering before = cluster_hair(scene.centres, scene.types, middle.middle_cluster,
+                                       kHeadHeight, HairClusteringParams{});
+  EXPECT_EQ(before.cluster, (std::vector<int32_t>{0, 0, 1, 1, 1, 1}));
+  EXPECT_EQ(before.continues_group, (std::vector<uint8_t>(6, 0)));
+
+  // A strip that starts beyond the f1 bound of the cap's end is no continuation.
+  Scene apart = scene;
+  std::vector<Points3f> pieces;
+  for (int64_t g = 0; g < scene.centres.strand_count(); ++g)
+    pieces.push_back(scene.centres.strand(g));
+  pieces[0] = piece({0, 0.1f, 0}, {0, 0.06f, 0});  // 13 cm above the strip: beyond H / 4
+  apart.centres = strand_set_from_polylines(pieces);
+  HairClustering far =
+      cluster_hair(apart.centres, apart.types, middle.middle_cluster, kHeadHeight, continued);
+  EXPECT_EQ(far.continues_group, (std::vector<uint8_t>(6, 0)));
+}
+
 TEST(HairClustering, NoMiddleGroupsIsSkippedAndBadInputRefused) {
   Scene scene = two_streams();
   std::vector<GroupType> no_middle(scene.types.size(), GroupType::root_free);
