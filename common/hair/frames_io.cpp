@@ -71,7 +71,8 @@ InterpolationInput read_interpolation_input(const h5::File& guides, const h5::Fi
   std::vector<int8_t> kind =
       h5::read_enum_dataset(guides, "/guides/kind", guide_kind_members());
   for (int8_t k : kind) g.is_wisp_centre.push_back(k == 1 ? 1 : 0);
-  std::vector<int64_t> guide_strand = h5::read_vector<int64_t>(guides, "/guides/strand");
+  g.strand = h5::read_vector<int64_t>(guides, "/guides/strand");
+  const std::vector<int64_t>& guide_strand = g.strand;
   std::vector<int64_t> anchor_point = h5::read_vector<int64_t>(guides, "/guides/anchor_point");
   // Every strand guide starts on its grown strand's anchor point: the same model.
   const double tolerance_m = 1e-4 * input.head_height_m;
@@ -159,6 +160,10 @@ void write_frames_bindings(h5::File& file, const StrandSet& strands, const Stran
   h5::write_enum_dataset(file, "/strands/method", method, interpolation_method_members());
   h5::write_dataset(file, "/strands/guides", guides, {count, 3});
   h5::write_dataset(file, "/strands/weights", weights, {count, 3});
+  std::vector<uint8_t> is_guide(static_cast<size_t>(count), 0);
+  for (int64_t s : info.guide_strand)
+    if (s >= 0 && s < count) is_guide[static_cast<size_t>(s)] = 1;
+  h5::write_vector(file, "/strands/is_guide", is_guide);
   h5::write_vector(file, "/strands/held_count", binding.held_count);
   h5::write_vector(file, "/strands/bound_from", binding.bound_from);
   h5::write_enum_dataset(file, "/clusters/simulated_style", info.simulated_style,
@@ -197,6 +202,8 @@ FramesFile read_frames_file(const h5::File& file) {
   std::vector<int8_t> method =
       h5::read_enum_dataset(file, "/strands/method", interpolation_method_members());
   frames.rest.strand_attributes["method"] = std::vector<int32_t>(method.begin(), method.end());
+  std::vector<uint8_t> is_guide = h5::read_vector<uint8_t>(file, "/strands/is_guide");
+  frames.rest.strand_attributes["is_guide"] = std::vector<int32_t>(is_guide.begin(), is_guide.end());
   frames.cluster_style = h5::read_enum_dataset(file, "/clusters/style", style_members());
   frames.simulated_style =
       h5::read_enum_dataset(file, "/clusters/simulated_style", style_members());

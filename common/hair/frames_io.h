@@ -58,6 +58,7 @@ struct FramesFileInfo {
   int64_t source_frame_count = 0;
   double rest_max_deviation_m = 0;
   std::vector<int8_t> cluster_style, simulated_style;
+  std::vector<int64_t> guide_strand;  ///< grown strand of every guide (-1 for wisp centres)
   double interpolation_ms_per_frame = -1;  ///< left out when negative (reproducible runs)
 };
 
@@ -74,7 +75,8 @@ void write_frames_timeline(h5::File& file, const std::vector<int64_t>& index,
 
 /// What exporters and pictures read of frames.h5 (not the points of the frames).
 struct FramesFile {
-  /// The grown strands at rest, with the strand attributes "cluster" and "method" and the
+  /// The grown strands at rest, with the strand attributes "cluster", "method" and
+  /// "is_guide" (1 for a strand simulated as a guide) and the
   /// point attribute "cluster".
   StrandSet rest;
   std::vector<int8_t> cluster_style, simulated_style;

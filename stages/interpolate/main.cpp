@@ -107,6 +107,7 @@ int main(int argc, char** argv) {
     info.rest_max_deviation_m = rest_deviation_m;
     info.cluster_style = input.cluster_style;
     info.simulated_style = input.guides.cluster_simulated_style;
+    info.guide_strand = input.guides.strand;
 
     // The frames, one chunk each.
     hair::h5::FrameDatasetWriter writer(file, "/frames/points", range.count(),
