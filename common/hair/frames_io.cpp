@@ -46,13 +46,13 @@ InterpolationInput read_interpolation_input(const h5::File& guides, const h5::Fi
   input.cluster_style = read_cluster_styles(styles);
   input.strands = std::move(grown.strands);
   input.head_height_m = grown.head_height_m;
-  const size_t clusters =
-      h5::read_vector<int64_t>(strands, "/clusters/strand_count").size();
+  const size_t clusters = h5::read_vector<int64_t>(strands, "/clusters/strand_count").size();
   if (input.cluster_style.size() != clusters)
     throw Error::other_model(styles.name(), "/clusters/style", input.cluster_style.size(),
                              "clusters", strands.name(), clusters);
   InterpolationGuides& g = input.guides;
-  g.cluster_simulated_style = h5::read_enum_dataset(guides, "/clusters/simulated_style", style_members());
+  g.cluster_simulated_style =
+      h5::read_enum_dataset(guides, "/clusters/simulated_style", style_members());
   if (g.cluster_simulated_style.size() != clusters)
     throw Error::other_model(guides.name(), "/clusters/simulated_style",
                              g.cluster_simulated_style.size(), "clusters", strands.name(),
@@ -61,15 +61,14 @@ InterpolationInput read_interpolation_input(const h5::File& guides, const h5::Fi
       std::get<std::vector<int32_t>>(input.strands.point_attributes.at("cluster"));
   for (int32_t cluster : point_cluster)
     if (cluster < 0 || static_cast<size_t>(cluster) >= clusters)
-      throw Error::bad_dataset(strands.name(), "/strands/point_attributes/cluster",
-                               "names cluster " + std::to_string(cluster) + " of " +
-                                   std::to_string(clusters));
+      throw Error::bad_dataset(
+          strands.name(), "/strands/point_attributes/cluster",
+          "names cluster " + std::to_string(cluster) + " of " + std::to_string(clusters));
 
   g.offsets = h5::read_vector<int64_t>(guides, "/guides/offsets");
   g.rest_points = h5::read_matrix<float, 3>(guides, "/guides/rest_points");
   g.cluster = h5::read_vector<int32_t>(guides, "/guides/cluster");
-  std::vector<int8_t> kind =
-      h5::read_enum_dataset(guides, "/guides/kind", guide_kind_members());
+  std::vector<int8_t> kind = h5::read_enum_dataset(guides, "/guides/kind", guide_kind_members());
   for (int8_t k : kind) g.is_wisp_centre.push_back(k == 1 ? 1 : 0);
   g.strand = h5::read_vector<int64_t>(guides, "/guides/strand");
   const std::vector<int64_t>& guide_strand = g.strand;
@@ -82,9 +81,8 @@ InterpolationInput read_interpolation_input(const h5::File& guides, const h5::Fi
     bool fits = s >= 0 && s < input.strands.strand_count() && anchor_point[i] >= 0 &&
                 anchor_point[i] < input.strands.strand_size(s);
     if (fits) {
-      Eigen::Vector3d on_strand =
-          point_of(input.strands.points, input.strands.offsets[static_cast<size_t>(s)] +
-                                             anchor_point[i]);
+      Eigen::Vector3d on_strand = point_of(
+          input.strands.points, input.strands.offsets[static_cast<size_t>(s)] + anchor_point[i]);
       Eigen::Vector3d first = point_of(g.rest_points, g.offsets[i]);
       fits = (on_strand - first).norm() <= tolerance_m;
     }
@@ -166,8 +164,7 @@ void write_frames_bindings(h5::File& file, const StrandSet& strands, const Stran
   h5::write_vector(file, "/strands/is_guide", is_guide);
   h5::write_vector(file, "/strands/held_count", binding.held_count);
   h5::write_vector(file, "/strands/bound_from", binding.bound_from);
-  h5::write_enum_dataset(file, "/clusters/simulated_style", info.simulated_style,
-                         style_members());
+  h5::write_enum_dataset(file, "/clusters/simulated_style", info.simulated_style, style_members());
   h5::write_enum_dataset(file, "/clusters/style", info.cluster_style, style_members());
 }
 
@@ -203,7 +200,8 @@ FramesFile read_frames_file(const h5::File& file) {
       h5::read_enum_dataset(file, "/strands/method", interpolation_method_members());
   frames.rest.strand_attributes["method"] = std::vector<int32_t>(method.begin(), method.end());
   std::vector<uint8_t> is_guide = h5::read_vector<uint8_t>(file, "/strands/is_guide");
-  frames.rest.strand_attributes["is_guide"] = std::vector<int32_t>(is_guide.begin(), is_guide.end());
+  frames.rest.strand_attributes["is_guide"] =
+      std::vector<int32_t>(is_guide.begin(), is_guide.end());
   frames.cluster_style = h5::read_enum_dataset(file, "/clusters/style", style_members());
   frames.simulated_style =
       h5::read_enum_dataset(file, "/clusters/simulated_style", style_members());

@@ -58,7 +58,7 @@ struct FramesFileInfo {
   int64_t source_frame_count = 0;
   double rest_max_deviation_m = 0;
   std::vector<int8_t> cluster_style, simulated_style;
-  std::vector<int64_t> guide_strand;  ///< grown strand of every guide (-1 for wisp centres)
+  std::vector<int64_t> guide_strand;       ///< grown strand of every guide (-1 for wisp centres)
   double interpolation_ms_per_frame = -1;  ///< left out when negative (reproducible runs)
 };
 

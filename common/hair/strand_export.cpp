@@ -134,9 +134,8 @@ void write_cyhair(const std::filesystem::path& path, const StrandSet& strands,
     segments.push_back(static_cast<uint16_t>(size - 1));
   }
   if (!thickness_m.empty() && static_cast<int64_t>(thickness_m.size()) != strands.point_count())
-    throw Error::usage("cyHair: " + std::to_string(thickness_m.size()) +
-                       " thickness values for " + std::to_string(strands.point_count()) +
-                       " points");
+    throw Error::usage("cyHair: " + std::to_string(thickness_m.size()) + " thickness values for " +
+                       std::to_string(strands.point_count()) + " points");
   std::ofstream out = open_output(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(&header), sizeof header);
   out.write(reinterpret_cast<const char*>(segments.data()),
@@ -156,10 +155,8 @@ StrandSet read_cyhair(const std::filesystem::path& path) {
   if (!in.read(reinterpret_cast<char*>(&header), sizeof header) ||
       std::memcmp(header.signature, "HAIR", 4) != 0)
     throw Error::bad_input(path.string(), "not a cyHair file (no HAIR signature)");
-  if (!(header.arrays & kPointsArray))
-    throw Error::bad_input(path.string(), "has no points array");
-  std::vector<uint16_t> segments(header.hair_count,
-                                 static_cast<uint16_t>(header.default_segments));
+  if (!(header.arrays & kPointsArray)) throw Error::bad_input(path.string(), "has no points array");
+  std::vector<uint16_t> segments(header.hair_count, static_cast<uint16_t>(header.default_segments));
   if (header.arrays & kSegmentsArray)
     in.read(reinterpret_cast<char*>(segments.data()),
             static_cast<std::streamsize>(segments.size() * sizeof(uint16_t)));

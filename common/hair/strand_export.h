@@ -39,15 +39,15 @@ StrandSet read_cyhair(const std::filesystem::path& path);
 
 /// What write_usda() writes besides the points.
 struct UsdaCurves {
-  std::vector<int64_t> offsets;         ///< CSR offsets of the strands (#strands + 1)
-  std::vector<int32_t> groom_id;        ///< per strand
-  std::vector<int32_t> groom_guide;     ///< per strand: 1 for a strand that is a guide
+  std::vector<int64_t> offsets;          ///< CSR offsets of the strands (#strands + 1)
+  std::vector<int32_t> groom_id;         ///< per strand
+  std::vector<int32_t> groom_guide;      ///< per strand: 1 for a strand that is a guide
   std::vector<Eigen::Vector2f> root_uv;  ///< per strand
-  std::vector<int32_t> cluster;         ///< per strand
-  std::vector<int32_t> style;           ///< per strand (HairStyle values, -1 none)
-  std::vector<float> width_m;           ///< per point
+  std::vector<int32_t> cluster;          ///< per strand
+  std::vector<int32_t> style;            ///< per strand (HairStyle values, -1 none)
+  std::vector<float> width_m;            ///< per point
   double fps = 30;
-  std::string comment;                  ///< goes into the layer's doc string
+  std::string comment;  ///< goes into the layer's doc string
 };
 
 /// Writes an ASCII USD layer: /Groom (Xform, metres: metersPerUnit 1, Y up) with a

@@ -191,14 +191,14 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     const Vec3 anchor_m = point_of(strands.points, begin + anchor);
     const int32_t cluster = point_cluster[static_cast<size_t>(begin + held)];
     std::vector<int32_t> nearest =
-        index.nearest(anchor_m.cast<float>(), std::min<int>(params.candidate_guides,
-                                                            static_cast<int>(usable.size())));
+        index.nearest(anchor_m.cast<float>(),
+                      std::min<int>(params.candidate_guides, static_cast<int>(usable.size())));
     std::array<int32_t, 3> chosen = {-1, -1, -1};
     std::array<double, 3> weights = {1, 0, 0};
     bool barycentric = nearest.size() >= 3;
     for (size_t k = 0; k < 3 && barycentric; ++k)
-      barycentric = guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] ==
-                    cluster;
+      barycentric =
+          guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] == cluster;
     if (barycentric) {
       for (size_t a = 0; a < 3; ++a)
         for (size_t b = a + 1; b < 3; ++b)
@@ -232,9 +232,9 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
         double best_distance = std::numeric_limits<double>::infinity();
         for (size_t i = 0; i < usable.size(); ++i) {
           if (guides.cluster[static_cast<size_t>(usable[i])] != cluster) continue;
-          double d = (anchors.row(static_cast<Eigen::Index>(i)).cast<double>().transpose() -
-                      anchor_m)
-                         .squaredNorm();
+          double d =
+              (anchors.row(static_cast<Eigen::Index>(i)).cast<double>().transpose() - anchor_m)
+                  .squaredNorm();
           if (d < best_distance) {
             best_distance = d;
             best = static_cast<int32_t>(i);
@@ -358,8 +358,7 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     for (int64_t row = begin; row < interpolated; ++row) {
       const float* p = offset + 3 * row;
       for (int r = 0; r < 3; ++r)
-        out[3 * row + r] =
-            head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
+        out[3 * row + r] = head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
     }
     // Interpolated: sum_g w_g (G_g(u) + F_g(u) d).
     if (interpolated < bound) {
@@ -371,8 +370,8 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
         if (g < 0) continue;
         int64_t first = binding.guide_offsets[static_cast<size_t>(g)];
         guide_table[guide_count] = table.data() + first * kRecord;
-        segments[guide_count] = static_cast<float>(
-            binding.guide_offsets[static_cast<size_t>(g) + 1] - first - 1);
+        segments[guide_count] =
+            static_cast<float>(binding.guide_offsets[static_cast<size_t>(g) + 1] - first - 1);
         weight[guide_count] = binding.weights[si][k];
         ++guide_count;
       }
@@ -403,8 +402,8 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
                        static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * kRecord;
       const float* local = offset + 3 * row;
       for (int r = 0; r < 3; ++r)
-        out[3 * row + r] = t[r] + t[3 + 3 * r] * local[0] + t[4 + 3 * r] * local[1] +
-                           t[5 + 3 * r] * local[2];
+        out[3 * row + r] =
+            t[r] + t[3 + 3 * r] * local[0] + t[4 + 3 * r] * local[1] + t[5 + 3 * r] * local[2];
     }
   }
 }

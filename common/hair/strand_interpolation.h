@@ -43,11 +43,11 @@ struct InterpolationParams {
 
 /// The simulated guides as interpolation reads them (guides.h5).
 struct InterpolationGuides {
-  Points3f rest_points;                 ///< #guide points x 3, at rest, anchor first
-  std::vector<int64_t> offsets{0};      ///< #guides + 1 (CSR)
-  std::vector<int32_t> cluster;         ///< #guides
-  std::vector<int8_t> is_wisp_centre;   ///< #guides: 1 for a wisp centre (never interpolated from)
-  std::vector<int64_t> strand;          ///< #guides: grown strand of a strand guide, else -1
+  Points3f rest_points;                ///< #guide points x 3, at rest, anchor first
+  std::vector<int64_t> offsets{0};     ///< #guides + 1 (CSR)
+  std::vector<int32_t> cluster;        ///< #guides
+  std::vector<int8_t> is_wisp_centre;  ///< #guides: 1 for a wisp centre (never interpolated from)
+  std::vector<int64_t> strand;         ///< #guides: grown strand of a strand guide, else -1
   std::vector<int32_t> wisp_tetrahedron_offsets{0};  ///< #wisps + 1
   /// Braided points: grown point, wisp, tetrahedron of that wisp, position in its frame.
   std::vector<int64_t> binding_point;

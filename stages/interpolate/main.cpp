@@ -20,8 +20,8 @@
 namespace {
 
 /// Throws a runtime error naming the frame and strand of the first non-finite value.
-void require_finite(const std::vector<float>& points, const hair::StrandSet& strands,
-                    int64_t frame, const std::string& source) {
+void require_finite(const std::vector<float>& points, const hair::StrandSet& strands, int64_t frame,
+                    const std::string& source) {
   for (size_t i = 0; i < points.size(); ++i) {
     if (std::isfinite(points[i])) continue;
     auto row = static_cast<int64_t>(i / 3);
@@ -62,9 +62,9 @@ int main(int argc, char** argv) {
 
   return app.run(argc, argv, [&] {
     hair::h5::File guides_file = hair::h5::File::open_read_only(guides_path);
-    hair::InterpolationInput input = hair::read_interpolation_input(
-        guides_file, hair::h5::File::open_read_only(strands_path),
-        hair::h5::File::open_read_only(styles_path));
+    hair::InterpolationInput input =
+        hair::read_interpolation_input(guides_file, hair::h5::File::open_read_only(strands_path),
+                                       hair::h5::File::open_read_only(styles_path));
     const hair::FrameRange range = hair::parse_frame_range(frames_text, input.frame_count);
     const hair::StrandSet& strands = input.strands;
 
@@ -134,11 +134,11 @@ int main(int argc, char** argv) {
     }
     progress.finish();
     std::vector<double> sorted = frame_ms;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
-                     sorted.end());
+    std::nth_element(sorted.begin(),
+                     sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
     const double median_ms = sorted[sorted.size() / 2];
-    spdlog::info("{}: frames {} to {}: {:.3f} ms per frame of interpolation (median)",
-                 guides_path, range.first, range.end - 1, median_ms);
+    spdlog::info("{}: frames {} to {}: {:.3f} ms per frame of interpolation (median)", guides_path,
+                 range.first, range.end - 1, median_ms);
     if (!app.reproducible()) info.interpolation_ms_per_frame = median_ms;
     hair::write_frames_bindings(file, strands, binding, info);
     hair::write_frames_timeline(file, index, time_s, head);

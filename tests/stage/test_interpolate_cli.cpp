@@ -50,22 +50,22 @@ class InterpolateCli : public ::testing::Test {
   }
   static Model model(const std::string& name) {
     Model m;
-    m.out = hair::test::run_sample_pipeline(directory() / name,
-                                            kSamples / "hair" / (name + ".obj"), 10000);
+    m.out = hair::test::run_sample_pipeline(directory() / name, kSamples / "hair" / (name + ".obj"),
+                                            10000);
     fs::path folder = m.out.strands.parent_path();
     m.styles = folder / "styles.h5";
     m.guides = folder / "guides.h5";
     m.frames = folder / "frames.h5";
     if (!fs::exists(m.styles))
-      run_stage("classify", {m.out.extract.string(), m.out.clusters.string(),
-                             m.out.strands.string(), "--model", kModel.string(), "-o",
-                             m.styles.string()});
+      run_stage("classify",
+                {m.out.extract.string(), m.out.clusters.string(), m.out.strands.string(), "--model",
+                 kModel.string(), "-o", m.styles.string()});
     if (!fs::exists(m.guides))
       run_stage("simulate", {m.out.extract.string(), m.out.strands.string(), m.styles.string(),
                              "--duration_s", "0.5", "-o", m.guides.string()});
     if (!fs::exists(m.frames))
-      run_stage("interpolate", {m.guides.string(), m.out.strands.string(), m.styles.string(),
-                                "-o", m.frames.string()});
+      run_stage("interpolate", {m.guides.string(), m.out.strands.string(), m.styles.string(), "-o",
+                                m.frames.string()});
     return m;
   }
 
@@ -84,13 +84,15 @@ void expect_valid(const fs::path& path) {
 }
 
 /// Largest distance between frame `row`'s points and the rest points carried by the head.
-double deviation_from_rest(const hair::h5::File& file, const hair::FramesFile& frames, int64_t row) {
+double deviation_from_rest(const hair::h5::File& file, const hair::FramesFile& frames,
+                           int64_t row) {
   hair::Points3f points = hair::read_frame_points(file, row);
   double worst = 0;
   for (int64_t p = 0; p < frames.rest.point_count(); ++p)
-    worst = std::max(worst, (hair::point_of(points, p) -
-                             frames.head[static_cast<size_t>(row)].apply(hair::point_of(frames.rest.points, p)))
-                                .norm());
+    worst = std::max(
+        worst, (hair::point_of(points, p) -
+                frames.head[static_cast<size_t>(row)].apply(hair::point_of(frames.rest.points, p)))
+                   .norm());
   return worst;
 }
 
@@ -132,7 +134,8 @@ TEST_F(InterpolateCli, StrandsFollowTheirGuides) {
   auto weights = hair::h5::read_array<float>(file, "/strands/weights").values;
   const auto& method = std::get<std::vector<int32_t>>(frames.rest.strand_attributes.at("method"));
   const int64_t last = frames.frame_count() - 1;
-  hair::Points3f rest = hair::read_frame_points(file, 0), moved = hair::read_frame_points(file, last);
+  hair::Points3f rest = hair::read_frame_points(file, 0),
+                 moved = hair::read_frame_points(file, last);
   hair::h5::Array<float> guide_frames = hair::h5::read_array<float>(guides, "/frames/guide_points");
   const int64_t guide_points = guide_frames.shape[1];
   auto guide_tip = [&](int64_t frame, int64_t s) {
@@ -157,7 +160,8 @@ TEST_F(InterpolateCli, StrandsFollowTheirGuides) {
     double after = (hair::point_of(moved, tip) - guide_tip(last, s)).norm();
     ++checked;
     kept += std::abs(after - before) <= 0.02 * frames.head_height_m + 0.05 * before;
-    moved_most = std::max(moved_most, (hair::point_of(moved, tip) - hair::point_of(rest, tip)).norm());
+    moved_most =
+        std::max(moved_most, (hair::point_of(moved, tip) - hair::point_of(rest, tip)).norm());
   }
   ASSERT_GT(checked, 1000);
   EXPECT_GT(kept, 0.99 * static_cast<double>(checked)) << kept << " of " << checked;
@@ -176,7 +180,8 @@ TEST_F(InterpolateCli, AFrameRangeIsThoseFramesOfAFullRun) {
   EXPECT_EQ(frames.first_frame, 5);
   EXPECT_EQ(frames.index.front(), 5);
   for (int64_t row = 0; row < 4; ++row)
-    EXPECT_TRUE(hair::read_frame_points(part_file, row) == hair::read_frame_points(whole_file, row + 5))
+    EXPECT_TRUE(hair::read_frame_points(part_file, row) ==
+                hair::read_frame_points(whole_file, row + 5))
         << "row " << row;
 }
 
@@ -197,9 +202,9 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
   fs::path folder = directory() / "exports";
   fs::create_directories(folder);
   auto result = run_command(kBin / "hair-export",
-                            {m.frames.string(), "--frames", "2:5", "--obj", (folder / "obj").string(),
-                             "--usda", (folder / "braid.usda").string(), "--hair",
-                             (folder / "frame3.hair").string(), "--frame", "3"});
+                            {m.frames.string(), "--frames", "2:5", "--obj",
+                             (folder / "obj").string(), "--usda", (folder / "braid.usda").string(),
+                             "--hair", (folder / "frame3.hair").string(), "--frame", "3"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   hair::h5::File file = hair::h5::File::open_read_only(m.frames);
   hair::FramesFile frames = hair::read_frames_file(file);
@@ -227,7 +232,8 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
   for (int64_t s = 0; s < strands; ++s)
     EXPECT_EQ(counts[static_cast<size_t>(s)], static_cast<double>(frames.rest.strand_size(s)));
   EXPECT_EQ(static_cast<int64_t>(layer.arrays["widths"].size()), points);
-  for (const char* primvar : {"primvars:groom_id", "primvars:groom_guide", "primvars:cluster", "primvars:style"})
+  for (const char* primvar :
+       {"primvars:groom_id", "primvars:groom_guide", "primvars:cluster", "primvars:style"})
     EXPECT_EQ(static_cast<int64_t>(layer.arrays[primvar].size()), strands) << primvar;
   EXPECT_EQ(static_cast<int64_t>(layer.arrays["primvars:groom_root_uv"].size()), 2 * strands);
   ASSERT_EQ(layer.point_samples.size(), 3u);
@@ -241,19 +247,21 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
 TEST_F(InterpolateCli, RendersAStillAndAVideo) {
   Model m = model("ponytail01");
   fs::path still = directory() / "still.png", video = directory() / "preview.mp4";
-  auto result = run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
-                                                  "--frame", "8", "--color-by", "cluster", "-o",
-                                                  still.string(), "--size", "200"});
+  auto result = run_command(kBin / "hair-render",
+                            {m.frames.string(), "--extract", m.out.extract.string(), "--frame", "8",
+                             "--color-by", "cluster", "-o", still.string(), "--size", "200"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_GT(fs::file_size(still), 1000u);
-  result = run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
-                                             "-o", video.string(), "--size", "160"});
+  result =
+      run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
+                                         "-o", video.string(), "--size", "160"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   std::string bytes = read_file_bytes(video);
   ASSERT_GT(bytes.size(), 1000u);
   EXPECT_EQ(bytes.substr(4, 4), "ftyp") << "not an MP4 file";
-  result = run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
-                                             "--frame", "99", "-o", still.string()});
+  result =
+      run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
+                                         "--frame", "99", "-o", still.string()});
   EXPECT_EQ(result.exit_code, 2);
 }
 
@@ -275,7 +283,8 @@ TEST_F(InterpolateCli, WrongInputsFailCleanly) {
         strands, styles},
        "/guides/rest_points: expected finite values"},
       {{guides,
-        hair::test::copy_with_nan(braid.out.strands, directory / "nan_strands.h5", "/strands/points")
+        hair::test::copy_with_nan(braid.out.strands, directory / "nan_strands.h5",
+                                  "/strands/points")
             .string(),
         styles},
        "/strands/points: expected finite values"},

@@ -13,11 +13,11 @@
 namespace hair::test {
 
 struct UsdaLayer {
-  std::string header;                                   ///< first line, "#usda 1.0"
-  std::map<std::string, std::vector<double>> arrays;    ///< "int[] curveVertexCounts", ...
-  std::map<long, std::vector<double>> point_samples;    ///< time code -> flat xyz
-  std::map<std::string, std::string> metadata;          ///< layer metadata, key = value text
-  std::vector<std::string> prims;                       ///< "Xform Groom", "BasisCurves Strands"
+  std::string header;                                 ///< first line, "#usda 1.0"
+  std::map<std::string, std::vector<double>> arrays;  ///< "int[] curveVertexCounts", ...
+  std::map<long, std::vector<double>> point_samples;  ///< time code -> flat xyz
+  std::map<std::string, std::string> metadata;        ///< layer metadata, key = value text
+  std::vector<std::string> prims;                     ///< "Xform Groom", "BasisCurves Strands"
 };
 
 namespace usda_detail {
@@ -57,9 +57,9 @@ inline std::vector<Token> tokenise(const std::string& text) {
       i = end;
     } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       size_t end = i + 1;
-      while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) ||
-                                   text[end] == '_' || text[end] == ':' || text[end] == '.' ||
-                                   text[end] == '[' || text[end] == ']')) {
+      while (end < text.size() &&
+             (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_' ||
+              text[end] == ':' || text[end] == '.' || text[end] == '[' || text[end] == ']')) {
         if (text[end] == '[' && (end + 1 >= text.size() || text[end + 1] != ']')) break;
         ++end;
       }

@@ -34,7 +34,8 @@ std::vector<Vec3> curled(const Vec3& root, int count, double curl_m) {
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i) {
     double t = static_cast<double>(i) / (count - 1);
-    points.push_back(root + Vec3(curl_m * std::sin(6 * t), -kLength * t, curl_m * (1 - std::cos(6 * t))));
+    points.push_back(root +
+                     Vec3(curl_m * std::sin(6 * t), -kLength * t, curl_m * (1 - std::cos(6 * t))));
   }
   return points;
 }
@@ -70,7 +71,8 @@ Scene make_scene() {
   // Strands of the grid (curled, 11 to 17 points), one of cluster 2.
   for (int k = 0; k < 12; ++k) {
     Vec3 root(0.003 + 0.0033 * k, 0, 0.005 + 0.0025 * k);
-    add_strand(curled(root, 11 + k % 7, 0.004), std::vector<int32_t>(static_cast<size_t>(11 + k % 7), kGrid));
+    add_strand(curled(root, 11 + k % 7, 0.004),
+               std::vector<int32_t>(static_cast<size_t>(11 + k % 7), kGrid));
   }
   add_strand(curled(Vec3(0.21, 0, 0.01), 9, 0.003), std::vector<int32_t>(9, kSide));
   // A strand over the cap (3 points on y = 0.01) then down the grid.
@@ -90,9 +92,20 @@ Scene make_scene() {
     g.wisp_tetrahedron_offsets = {0, 2};
     // Tetrahedron 0 at (0.3, -0.02, 0), identity; 1 at (0.3, -0.08, 0), turned about Y.
     Eigen::Quaterniond turned(Eigen::AngleAxisd(0.3, Vec3::UnitY()));
-    scene.wisp_rest = {0.3f, -0.02f, 0.0f, 1, 0, 0, 0,
-                       0.3f, -0.08f, 0.0f, static_cast<float>(turned.w()), static_cast<float>(turned.x()),
-                       static_cast<float>(turned.y()), static_cast<float>(turned.z())};
+    scene.wisp_rest = {0.3f,
+                       -0.02f,
+                       0.0f,
+                       1,
+                       0,
+                       0,
+                       0,
+                       0.3f,
+                       -0.08f,
+                       0.0f,
+                       static_cast<float>(turned.w()),
+                       static_cast<float>(turned.x()),
+                       static_cast<float>(turned.y()),
+                       static_cast<float>(turned.z())};
     int64_t base = scene.strands.offsets[scene.strands.strand_count() - 1];
     for (int i = 1; i < 4; ++i) {
       int32_t t = i < 2 ? 0 : 1;
@@ -101,20 +114,20 @@ Scene make_scene() {
       g.binding_point.push_back(base + i);
       g.binding_wisp.push_back(0);
       g.binding_tetrahedron.push_back(t);
-      g.binding_local_m.push_back((rotation.transpose() * (points[static_cast<size_t>(i)] - origin)).cast<float>());
+      g.binding_local_m.push_back(
+          (rotation.transpose() * (points[static_cast<size_t>(i)] - origin)).cast<float>());
     }
   }
   scene.strands.point_attributes["cluster"] = point_cluster;
-  g.cluster_simulated_style = {static_cast<int8_t>(HairStyle::fixed),
-                               static_cast<int8_t>(HairStyle::normal),
-                               static_cast<int8_t>(HairStyle::normal),
-                               static_cast<int8_t>(HairStyle::braided)};
+  g.cluster_simulated_style = {
+      static_cast<int8_t>(HairStyle::fixed), static_cast<int8_t>(HairStyle::normal),
+      static_cast<int8_t>(HairStyle::normal), static_cast<int8_t>(HairStyle::braided)};
   return scene;
 }
 
 /// The guides' points after `move` (applied to each guide's rest particles, with its anchor).
-std::vector<float> moved_guides(const Scene& scene,
-                                const std::function<Vec3(const Vec3& point, const Vec3& anchor)>& move) {
+std::vector<float> moved_guides(
+    const Scene& scene, const std::function<Vec3(const Vec3& point, const Vec3& anchor)>& move) {
   const InterpolationGuides& g = scene.guides;
   std::vector<float> points;
   for (int64_t guide = 0; guide < g.guide_count(); ++guide) {
@@ -183,9 +196,11 @@ TEST(StrandInterpolation, GuidesInOtherDirectionsGiveClumps) {
 TEST(StrandInterpolation, AtRestReproducesTheGrownStrands) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
-  std::vector<float> guide_points = moved_guides(scene, [](const Vec3& p, const Vec3&) { return p; });
+  std::vector<float> guide_points =
+      moved_guides(scene, [](const Vec3& p, const Vec3&) { return p; });
   std::vector<float> points;
-  interpolate_frame(binding, scene.strands, {guide_points.data(), scene.wisp_rest.data(), {}}, points);
+  interpolate_frame(binding, scene.strands, {guide_points.data(), scene.wisp_rest.data(), {}},
+                    points);
   ASSERT_EQ(static_cast<int64_t>(points.size()), 3 * scene.strands.point_count());
   double worst = 0;
   for (int64_t row = 0; row < scene.strands.point_count(); ++row)
@@ -239,9 +254,10 @@ TEST(StrandInterpolation, StrandsFollowTheirGuides) {
   }
   // Every guide swung 90 degrees about +X round its anchor: each interpolated tip swings
   // about the weighted anchor, R p + (I - R) sum_g w_g a_g.
-  const Eigen::Matrix3d swing = Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX()).toRotationMatrix();
-  std::vector<float> swung =
-      moved_guides(scene, [&](const Vec3& p, const Vec3& anchor) { return anchor + swing * (p - anchor); });
+  const Eigen::Matrix3d swing =
+      Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX()).toRotationMatrix();
+  std::vector<float> swung = moved_guides(
+      scene, [&](const Vec3& p, const Vec3& anchor) { return anchor + swing * (p - anchor); });
   interpolate_frame(binding, scene.strands, {swung.data(), scene.wisp_rest.data(), {}}, points);
   for (int64_t s = 0; s < 13; ++s) {
     Vec3 anchors = Vec3::Zero();

@@ -24,8 +24,8 @@ std::vector<int64_t> rows_of(const hair::FramesFile& frames, const hair::FrameRa
   const int64_t first = frames.first_frame, end = first + frames.frame_count();
   if (range.first < first || range.end > end)
     throw hair::Error::usage(source + " holds frames " + std::to_string(first) + " to " +
-                             std::to_string(end - 1) + " only, not " +
-                             std::to_string(range.first) + " to " + std::to_string(range.end - 1));
+                             std::to_string(end - 1) + " only, not " + std::to_string(range.first) +
+                             " to " + std::to_string(range.end - 1));
   std::vector<int64_t> rows;
   for (int64_t f = range.first; f < range.end; ++f) rows.push_back(f - first);
   return rows;
@@ -38,9 +38,9 @@ std::vector<float> tapered_widths(const hair::StrandSet& strands, double root_m)
     const int64_t begin = strands.offsets[static_cast<size_t>(s)];
     const int64_t size = strands.strand_size(s);
     for (int64_t i = 0; i < size; ++i)
-      widths[static_cast<size_t>(begin + i)] =
-          static_cast<float>(root_m * (1.0 - 2.0 / 3.0 * static_cast<double>(i) /
-                                                 static_cast<double>(std::max<int64_t>(1, size - 1))));
+      widths[static_cast<size_t>(begin + i)] = static_cast<float>(
+          root_m * (1.0 - 2.0 / 3.0 * static_cast<double>(i) /
+                              static_cast<double>(std::max<int64_t>(1, size - 1))));
   }
   return widths;
 }
@@ -80,14 +80,16 @@ int main(int argc, char** argv) {
   app.add_option("--usda", usda_path,
                  "ASCII USD file: BasisCurves with the points of every frame of --frames as "
                  "time samples, and the groom attributes");
-  app.add_option("--obj", obj_dir, "folder for OBJ polylines, one file per frame of --frames "
-                                   "(frame_NNNN.obj, NNNN the simulation's frame)");
+  app.add_option("--obj", obj_dir,
+                 "folder for OBJ polylines, one file per frame of --frames "
+                 "(frame_NNNN.obj, NNNN the simulation's frame)");
   app.add_option("--hair", hair_path, "cyHair .hair file of the frame --frame");
   app.add_option("--frames", frames_text,
                  "frames of the simulation to export (A:B is A to B-1, A:, :B or N); all the "
                  "file holds by default");
   app.add_option("--frame", frame, "the frame of --hair (default: the file's first)");
-  app.add_option("--width_m", width_m, "strand width at the root, metres (a third of it at the tip)")
+  app.add_option("--width_m", width_m,
+                 "strand width at the root, metres (a third of it at the tip)")
       ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
@@ -102,9 +104,8 @@ int main(int argc, char** argv) {
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
     hair::FramesFile frames = hair::read_frames_file(file);
     const int64_t last = frames.first_frame + frames.frame_count();
-    hair::FrameRange range =
-        frames_text.empty() ? hair::FrameRange{frames.first_frame, last}
-                            : hair::parse_frame_range(frames_text, last);
+    hair::FrameRange range = frames_text.empty() ? hair::FrameRange{frames.first_frame, last}
+                                                 : hair::parse_frame_range(frames_text, last);
     std::vector<int64_t> rows = rows_of(frames, range, input_path);
     hair::StrandSet strands = frames.rest;
     const std::string note = "from " + input_path + ", motion " + frames.motion;
@@ -130,9 +131,8 @@ int main(int argc, char** argv) {
       curves.comment = note;
       std::vector<int64_t> codes;
       for (int64_t row : rows) codes.push_back(frames.index[static_cast<size_t>(row)]);
-      hair::write_usda(usda_path, curves, codes, [&](size_t k) {
-        return hair::read_frame_points(file, rows[k]);
-      });
+      hair::write_usda(usda_path, curves, codes,
+                       [&](size_t k) { return hair::read_frame_points(file, rows[k]); });
     }
     if (!obj_dir.empty()) {
       fs::create_directories(obj_dir);
@@ -141,9 +141,9 @@ int main(int argc, char** argv) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04lld.obj",
                       static_cast<long long>(frames.index[static_cast<size_t>(row)]));
-        hair::write_obj_polylines(fs::path(obj_dir) / name, strands,
-                                  note + ", frame " +
-                                      std::to_string(frames.index[static_cast<size_t>(row)]));
+        hair::write_obj_polylines(
+            fs::path(obj_dir) / name, strands,
+            note + ", frame " + std::to_string(frames.index[static_cast<size_t>(row)]));
       }
     }
     if (!hair_path.empty()) {

@@ -13,8 +13,8 @@
 
 #include "hair/clustering_io.h"
 #include "hair/error.h"
-#include "hair/frames_io.h"
 #include "hair/extract_io.h"
+#include "hair/frames_io.h"
 #include "hair/grow_io.h"
 #include "hair/guides_io.h"
 #include "hair/h5/attribute.h"
@@ -110,17 +110,19 @@ bool is_video(const std::string& path) {
   return path.size() > 4 && path.compare(path.size() - 4, 4, ".mp4") == 0;
 }
 
-/// frames.h5: a PNG of frame `frame` (of the simulation; -1 the file's first), or an MP4
+/// frames.h5: a PNG of frame `frame` (of the simulation; -1 the file's middle one), or an MP4
 /// of every frame.
 void render_frames(const hair::h5::File& file, const std::string& extract_path,
                    const std::string& colouring, int64_t frame, const std::string& output_path,
                    hair::RenderOptions options) {
   if (extract_path.empty())
-    throw hair::Error::usage(file.name() + " (frames) needs --extract: the extract.h5 of its model");
+    throw hair::Error::usage(file.name() +
+                             " (frames) needs --extract: the extract.h5 of its model");
   hair::FramesScene scene =
       hair::read_frames_scene(file, hair::h5::File::open_read_only(extract_path));
   hair::FramesColouring how = hair::parse_frames_colouring(colouring.empty() ? "style" : colouring);
-  options.views = {hair::ViewDirection::front, hair::ViewDirection::side, hair::ViewDirection::back};
+  options.views = {hair::ViewDirection::front, hair::ViewDirection::side,
+                   hair::ViewDirection::back};
   if (is_video(output_path)) {
     options.views = {hair::ViewDirection::front, hair::ViewDirection::side};
     if (frame >= 0) throw hair::Error::usage("--frame is for a PNG, not a video of every frame");
@@ -128,7 +130,7 @@ void render_frames(const hair::h5::File& file, const std::string& extract_path,
     return;
   }
   const int64_t first = scene.frames.first_frame;
-  const int64_t row = frame < 0 ? 0 : frame - first;
+  const int64_t row = frame < 0 ? scene.frames.frame_count() / 2 : frame - first;
   if (row < 0 || row >= scene.frames.frame_count())
     throw hair::Error::usage(file.name() + " holds frames " + std::to_string(first) + " to " +
                              std::to_string(first + scene.frames.frame_count() - 1) + ", not " +
@@ -182,12 +184,13 @@ int main(int argc, char** argv) {
                  "PNG to write; for frames.h5 also an MP4 video of every frame (*.mp4)")
       ->required();
   app.add_option("--frame", frame,
-                 "frames.h5: the frame of the simulation to draw (default: the file's first)");
+                 "frames.h5: the frame of the simulation to draw (default: the file's middle one)");
   app.add_option("--color-by", colouring,
                  "extract.h5: group (default), direction, rule or kind; clusters.h5: cluster "
                  "(default, the final clusters) or before_split (as spectral clustering found "
                  "them); strands.h5: cluster (default), rule (how each segment was grown) or "
-                 "direction; frames.h5: style (default) or cluster. types.h5 is coloured by type, middle.h5 by middle cluster (other "
+                 "direction; frames.h5: style (default) or cluster. types.h5 is coloured by type, "
+                 "middle.h5 by middle cluster (other "
                  "groups grey)");
   auto* labels_option = app.add_option(
       "--style-labels", labels_path,
@@ -218,9 +221,9 @@ int main(int argc, char** argv) {
     options.draw_body = !no_body;
     options.title = title;
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
-    const bool frames_file = hair::h5::has_attribute(file, "/", "schema") &&
-                             hair::h5::read_string_attribute(file, "/", "schema") ==
-                                 hair::kFramesSchema;
+    const bool frames_file =
+        hair::h5::has_attribute(file, "/", "schema") &&
+        hair::h5::read_string_attribute(file, "/", "schema") == hair::kFramesSchema;
     if (frames_file) {
       render_frames(file, extract_path, colouring, frame, output_path, options);
     } else if (frame >= 0 || is_video(output_path)) {

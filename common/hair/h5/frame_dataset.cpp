@@ -42,8 +42,8 @@ void FrameDatasetWriter::write(int64_t frame, const std::vector<float>& values) 
   std::array<hsize_t, 3> count = {1, static_cast<hsize_t>(rows_), static_cast<hsize_t>(columns_)};
   H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
   Handle memory(H5Screate_simple(3, count.data(), nullptr), H5Sclose);
-  if (H5Dwrite(dataset_.get(), memory_type(Dtype::float32), memory.get(), space.get(),
-               H5P_DEFAULT, values.data()) < 0)
+  if (H5Dwrite(dataset_.get(), memory_type(Dtype::float32), memory.get(), space.get(), H5P_DEFAULT,
+               values.data()) < 0)
     throw Error(ErrorKind::runtime, file_name_, path_, with_hdf5_message("cannot write frame"));
 }
 

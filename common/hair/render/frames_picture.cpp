@@ -120,7 +120,8 @@ cv::Mat frame_picture(const FramesScene& scene, const Points3f& points, int64_t 
                       frames.motion.c_str());
   cv::putText(picture, title, cv::Point(8, 14), cv::FONT_HERSHEY_SIMPLEX, 0.45,
               cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
-  if (colouring == FramesColouring::style) draw_style_legend(picture, cv::Point(10, 19), style_count);
+  if (colouring == FramesColouring::style)
+    draw_style_legend(picture, cv::Point(10, 19), style_count);
   return picture;
 }
 
@@ -132,8 +133,8 @@ void write_frames_video(const FramesScene& scene, const h5::File& file, const st
   // Even sizes: encoders want whole macroblock pairs.
   cv::Size size(first.cols & ~1, first.rows & ~1);
   const double fps = scene.frames.fps;
-  for (int fourcc : {cv::VideoWriter::fourcc('a', 'v', 'c', '1'),
-                     cv::VideoWriter::fourcc('m', 'p', '4', 'v')}) {
+  for (int fourcc :
+       {cv::VideoWriter::fourcc('a', 'v', 'c', '1'), cv::VideoWriter::fourcc('m', 'p', '4', 'v')}) {
     if (writer.open(path, cv::CAP_FFMPEG, fourcc, fps, size)) break;
   }
   if (!writer.isOpened())
@@ -142,9 +143,9 @@ void write_frames_video(const FramesScene& scene, const h5::File& file, const st
                          "MPEG-4 encoder through FFmpeg; install libopencv-videoio-dev with "
                          "FFmpeg)");
   for (int64_t row = 0; row < scene.frames.frame_count(); ++row) {
-    cv::Mat picture = row == 0 ? first
-                               : frame_picture(scene, read_frame_points(file, row), row, colouring,
-                                               options);
+    cv::Mat picture =
+        row == 0 ? first
+                 : frame_picture(scene, read_frame_points(file, row), row, colouring, options);
     writer.write(picture(cv::Rect(0, 0, size.width, size.height)));
   }
   writer.release();
