@@ -112,6 +112,20 @@ InterpolationInput read_interpolation_input(const h5::File& guides, const h5::Fi
   input.time_s = h5::read_vector<double>(guides, "/frames/time_s");
   input.frame_count = static_cast<int64_t>(input.time_s.size());
   input.head = read_head(guides);
+  if (input.head.empty())
+    throw Error::bad_dataset(guides.name(), "/frames/head_rotation", "has no frames");
+  // The wisps' frames at rest: frame 0's, back through the head at time 0.
+  const std::vector<float> first = h5::read_frame(guides, "/wisps/frames", 0);
+  const RigidTransform& head = input.head.front();
+  const Eigen::Quaterniond inverse = head.rotation.normalized().conjugate();
+  for (size_t t = 0; t + 7 <= first.size(); t += 7) {
+    Eigen::Vector3d origin =
+        head.apply_inverse(Eigen::Vector3d(first[t], first[t + 1], first[t + 2]));
+    Eigen::Quaterniond q =
+        inverse * Eigen::Quaterniond(first[t + 3], first[t + 4], first[t + 5], first[t + 6]);
+    for (double v : {origin.x(), origin.y(), origin.z(), q.w(), q.x(), q.y(), q.z()})
+      g.wisp_rest_frames.push_back(static_cast<float>(v));
+  }
   return input;
 }
 

@@ -103,6 +103,10 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
   binding.guide_offsets = guides.offsets;
   binding.guide_rest_points = guides.rest_points;
   binding.tetrahedron_count = guides.wisp_tetrahedron_offsets.back();
+  binding.bridged.assign(static_cast<size_t>(strand_count), 0);
+  binding.wisp_rest_frames = guides.wisp_rest_frames;
+  if (static_cast<int64_t>(binding.wisp_rest_frames.size()) != 7 * binding.tetrahedron_count)
+    throw Error::runtime("guides", "the wisps' rest frames are not 7 values per tetrahedron");
 
   // Guides that strands can follow: strand guides with at least two particles.
   std::vector<int32_t> usable;
@@ -175,6 +179,27 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
 
     if (held == bound_from) {
       binding.method[si] = held == size ? InterpolationMethod::fixed : InterpolationMethod::braided;
+      continue;
+    }
+    if (bound_from < size) {
+      // Bridged from the head (the last held point, or the root) to the wisp.
+      const int64_t from = held > 0 ? held - 1 : 0;
+      std::vector<double> arc(static_cast<size_t>(bound_from - from + 1), 0.0);
+      for (int64_t i = from + 1; i <= bound_from; ++i)
+        arc[static_cast<size_t>(i - from)] =
+            arc[static_cast<size_t>(i - from - 1)] +
+            (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+      const int32_t tetrahedron = binding.tetrahedron[static_cast<size_t>(begin + bound_from)];
+      for (int64_t i = held; i < bound_from; ++i) {
+        const auto row = static_cast<size_t>(begin + i);
+        binding.parameter[row] =
+            arc.back() > 0 ? static_cast<float>(arc[static_cast<size_t>(i - from)] / arc.back())
+                           : 0.0f;
+        binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+        binding.tetrahedron[row] = tetrahedron;
+      }
+      binding.bridged[si] = 1;
+      binding.method[si] = InterpolationMethod::braided;
       continue;
     }
     if (usable.empty()) {  // nothing to follow: held by the head
@@ -331,16 +356,26 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
   points_m.resize(static_cast<size_t>(strands.point_count()) * 3);
   std::vector<float> table;
   guide_frame_table(binding, frame, table);
-  // Wisp tetrahedra: origin and rotation matrix (row-major) per tetrahedron.
-  std::vector<float> tetrahedra(static_cast<size_t>(binding.tetrahedron_count) * kRecord);
+  // Wisp tetrahedra: origin and rotation matrix (row-major) per tetrahedron, then the
+  // transform from rest to now (translation, matrix) for bridged points.
+  std::vector<float> tetrahedra(static_cast<size_t>(binding.tetrahedron_count) * 2 * kRecord);
   for (int64_t t = 0; t < binding.tetrahedron_count; ++t) {
     const float* in = frame.wisp_frames + 7 * t;
+    const float* rest = binding.wisp_rest_frames.data() + 7 * t;
     Eigen::Matrix3f m =
         Eigen::Quaternionf(in[3], in[4], in[5], in[6]).normalized().toRotationMatrix();
-    float* out = tetrahedra.data() + t * kRecord;
+    Eigen::Matrix3f m_rest =
+        Eigen::Quaternionf(rest[3], rest[4], rest[5], rest[6]).normalized().toRotationMatrix();
+    Eigen::Matrix3f delta = m * m_rest.transpose();
+    Eigen::Vector3f shift =
+        Eigen::Vector3f(in[0], in[1], in[2]) - delta * Eigen::Vector3f(rest[0], rest[1], rest[2]);
+    float* out = tetrahedra.data() + t * 2 * kRecord;
     for (int axis = 0; axis < 3; ++axis) out[axis] = in[axis];
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) out[3 + 3 * r + c] = m(r, c);
+    for (int axis = 0; axis < 3; ++axis) out[kRecord + axis] = shift[axis];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) out[kRecord + 3 + 3 * r + c] = delta(r, c);
   }
   const Eigen::Matrix3f head = frame.head.rotation.normalized().toRotationMatrix().cast<float>();
   const Eigen::Vector3f head_t = frame.head.translation_m.cast<float>();
@@ -360,8 +395,23 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
       for (int r = 0; r < 3; ++r)
         out[3 * row + r] = head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
     }
-    // Interpolated: sum_g w_g (G_g(u) + F_g(u) d).
-    if (interpolated < bound) {
+    // Bridged: (1 - s) (R p + t) + s (D p + c) for the tetrahedron's D, c.
+    if (binding.bridged[si]) {
+      for (int64_t row = interpolated; row < bound; ++row) {
+        const float share = binding.parameter[static_cast<size_t>(row)];
+        const float* p = offset + 3 * row;
+        const float* t =
+            tetrahedra.data() +
+            static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * 2 * kRecord +
+            kRecord;
+        for (int r = 0; r < 3; ++r) {
+          float with_head = head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
+          float with_wisp = t[r] + t[3 + 3 * r] * p[0] + t[4 + 3 * r] * p[1] + t[5 + 3 * r] * p[2];
+          out[3 * row + r] = (1 - share) * with_head + share * with_wisp;
+        }
+      }
+    } else if (interpolated < bound) {
+      // Interpolated: sum_g w_g (G_g(u) + F_g(u) d).
       int guide_count = 0;
       const float* guide_table[3];
       float segments[3], weight[3];
@@ -398,8 +448,9 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     }
     // Bound: origin + R_tet local.
     for (int64_t row = bound; row < end; ++row) {
-      const float* t = tetrahedra.data() +
-                       static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * kRecord;
+      const float* t =
+          tetrahedra.data() +
+          static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * 2 * kRecord;
       const float* local = offset + 3 * row;
       for (int r = 0; r < 3; ++r)
         out[3 * row + r] =

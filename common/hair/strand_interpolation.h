@@ -53,6 +53,9 @@ struct InterpolationGuides {
   std::vector<int64_t> binding_point;
   std::vector<int32_t> binding_wisp, binding_tetrahedron;
   std::vector<Eigen::Vector3f> binding_local_m;
+  /// The wisp tetrahedra's frames at rest (#tetrahedra x 7: origin xyz, quaternion wxyz),
+  /// for the points between a braided strand's held root and its wisp.
+  std::vector<float> wisp_rest_frames;
   std::vector<int8_t> cluster_simulated_style;  ///< per cluster (HairStyle values, -1 none)
 
   int64_t guide_count() const { return static_cast<int64_t>(offsets.size()) - 1; }
@@ -84,9 +87,14 @@ struct StrandBinding {
   std::vector<int32_t> tetrahedron;  ///< bound points: global tetrahedron index; else -1
   /// Per strand: first point interpolated, one past the last.
   std::vector<int64_t> interpolated_from;
+  /// Per strand: 1 where the points between held_count and bound_from are bridged from the
+  /// head to the wisp (a braided strand): parameter is the share of the way along the
+  /// bridge, offset_m the rest position, tetrahedron the first bound point's.
+  std::vector<int8_t> bridged;
   int64_t tetrahedron_count = 0;
-  std::vector<int64_t> guide_offsets;  ///< the guides' CSR offsets
-  Points3f guide_rest_points;          ///< the guides at rest (their segments' rest directions)
+  std::vector<float> wisp_rest_frames;  ///< #tetrahedra x 7
+  std::vector<int64_t> guide_offsets;   ///< the guides' CSR offsets
+  Points3f guide_rest_points;           ///< the guides at rest (their segments' rest directions)
 };
 
 /// Binds `strands` (grown strands with the point attribute "cluster") to `guides` at
@@ -96,7 +104,10 @@ struct StrandBinding {
 /// first interpolated point): the three nearest guides if they are of that cluster and
 /// point in similar directions (barycentric weights of the anchor projected onto their
 /// triangle, clamped to it), else the nearest guide of the cluster (clump), else the
-/// nearest guide. A strand with points to interpolate and no guide at all is held.
+/// nearest guide. A strand with points to interpolate and no guide at all is held. A strand
+/// bound to a wisp follows no guide: its points between its held ones (or its root) and its
+/// first bound point are bridged, blended by arc length from moving with the head to
+/// moving with that point's tetrahedron (method braided).
 /// Deterministic. Throws Error::usage for parameters out of range and Error::runtime for
 /// guides or bindings that do not fit the strands.
 StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,
@@ -109,6 +120,7 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
 /// averaged at the particles, linear between them; the head's rotation at the anchor,
 /// so that roots move with the scalp); d the rest offset. At rest F = I and the sum
 /// reproduces the grown strand. Held point: R p + t. Bound point: origin + R_tet local.
+/// Bridged point at share s: (1 - s) (R p + t) + s T_tet T_tet,rest^-1 p.
 /// Parallel over strands (OpenMP); the same result whatever the thread count.
 void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
                        const GuideFrame& frame, std::vector<float>& points_m);

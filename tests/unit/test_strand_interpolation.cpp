@@ -107,8 +107,9 @@ Scene make_scene() {
                        static_cast<float>(turned.y()),
                        static_cast<float>(turned.z())};
     int64_t base = scene.strands.offsets[scene.strands.strand_count() - 1];
-    for (int i = 1; i < 4; ++i) {
-      int32_t t = i < 2 ? 0 : 1;
+    // Point 1 is not bound: it bridges the held root and the wisp.
+    for (int i = 2; i < 4; ++i) {
+      int32_t t = i < 3 ? 0 : 1;
       Vec3 origin(0.3, t == 0 ? -0.02 : -0.08, 0);
       Eigen::Matrix3d rotation = t == 0 ? Eigen::Matrix3d::Identity() : turned.toRotationMatrix();
       g.binding_point.push_back(base + i);
@@ -117,6 +118,7 @@ Scene make_scene() {
       g.binding_local_m.push_back(
           (rotation.transpose() * (points[static_cast<size_t>(i)] - origin)).cast<float>());
     }
+    g.wisp_rest_frames = scene.wisp_rest;
   }
   scene.strands.point_attributes["cluster"] = point_cluster;
   g.cluster_simulated_style = {
@@ -170,10 +172,11 @@ TEST(StrandInterpolation, ChoosesBarycentricClumpHeldAndBraided) {
   EXPECT_EQ(binding.held_count[13], 3);
   EXPECT_EQ(binding.bound_from[13], scene.strands.strand_size(13));
   EXPECT_NE(binding.method[13], InterpolationMethod::fixed);
-  // The braided strand: its root held, the rest bound.
+  // The braided strand: its root held, a point bridged, the rest bound.
   EXPECT_EQ(binding.method[static_cast<size_t>(count - 1)], InterpolationMethod::braided);
   EXPECT_EQ(binding.held_count[static_cast<size_t>(count - 1)], 1);
-  EXPECT_EQ(binding.bound_from[static_cast<size_t>(count - 1)], 1);
+  EXPECT_EQ(binding.bound_from[static_cast<size_t>(count - 1)], 2);
+  EXPECT_EQ(binding.bridged[static_cast<size_t>(count - 1)], 1);
 }
 
 TEST(StrandInterpolation, GuidesInOtherDirectionsGiveClumps) {
@@ -274,6 +277,35 @@ TEST(StrandInterpolation, StrandsFollowTheirGuides) {
     int64_t root = scene.strands.offsets[static_cast<size_t>(s)];
     EXPECT_LT((row_of(points, root) - point_of(scene.strands.points, root)).norm(), 1e-6);
   }
+}
+
+TEST(StrandInterpolation, BraidedPointsFollowTheirTetrahedra) {
+  Scene scene = make_scene();
+  StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
+  std::vector<float> guide_points =
+      moved_guides(scene, [](const Vec3& p, const Vec3&) { return p; });
+  // The wisp's tetrahedra carried 3 cm along -Z, the head still.
+  std::vector<float> wisp = scene.wisp_rest;
+  wisp[2] -= 0.03f;
+  wisp[9] -= 0.03f;
+  std::vector<float> points;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, points);
+  const int64_t s = scene.strands.strand_count() - 1,
+                begin = scene.strands.offsets[static_cast<size_t>(s)];
+  EXPECT_LT((row_of(points, begin) - point_of(scene.strands.points, begin)).norm(), 1e-7);  // held
+  for (int64_t i = 2; i < 4; ++i)
+    EXPECT_LT(
+        (row_of(points, begin + i) - point_of(scene.strands.points, begin + i) - Vec3(0, 0, -0.03))
+            .norm(),
+        1e-6);
+  // The bridged point moves part of the way, by its share of the arc to the wisp.
+  const double share = binding.parameter[static_cast<size_t>(begin + 1)];
+  EXPECT_GT(share, 0.0);
+  EXPECT_LT(share, 1.0);
+  EXPECT_LT((row_of(points, begin + 1) - point_of(scene.strands.points, begin + 1) -
+             share * Vec3(0, 0, -0.03))
+                .norm(),
+            1e-6);
 }
 
 TEST(StrandInterpolation, TheSameWhateverTheThreadCount) {
