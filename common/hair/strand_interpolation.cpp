@@ -15,8 +15,12 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-/// Floats per guide particle in a frame's table: position (3), frame matrix (9, row-major).
+/// Floats per wisp tetrahedron in a frame's table: origin (3), frame matrix (9, row-major).
 constexpr int kRecord = 12;
+/// Per guide particle in a frame's table: position, then the frame's three columns, each
+/// padded to 4 floats, so that a point is a few 4-wide SIMD operations per guide.
+constexpr int kColumns = 4;
+using Column = Eigen::Array4f;
 
 void check_params(const InterpolationParams& p) {
   if (p.candidate_guides < 3)
@@ -306,17 +310,17 @@ namespace {
 
 /// Per guide particle of one frame: its position and frame (see interpolate_frame()).
 void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame,
-                       std::vector<float>& table) {
+                       std::vector<Column>& table) {
   const float* rest_points = binding.guide_rest_points.data();
   const int64_t guides = static_cast<int64_t>(binding.guide_offsets.size()) - 1;
-  table.resize(static_cast<size_t>(binding.guide_rest_points.rows()) * kRecord);
+  table.resize(static_cast<size_t>(binding.guide_rest_points.rows()) * kColumns);
   const Eigen::Quaterniond head = frame.head.rotation.normalized();
   auto put = [&](int64_t row, const Eigen::Quaterniond& q) {
     Eigen::Matrix3f m = q.toRotationMatrix().cast<float>();
-    float* out = table.data() + row * kRecord;
-    for (int axis = 0; axis < 3; ++axis) out[axis] = frame.guide_points_m[3 * row + axis];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) out[3 + 3 * r + c] = m(r, c);
+    Column* out = table.data() + row * kColumns;
+    const float* p = frame.guide_points_m + 3 * row;
+    out[0] = Column(p[0], p[1], p[2], 0);
+    for (int c = 0; c < 3; ++c) out[1 + c] = Column(m(0, c), m(1, c), m(2, c), 0);
   };
   std::vector<Eigen::Quaterniond> segment;
   for (int64_t g = 0; g < guides; ++g) {
@@ -354,7 +358,7 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
                        const GuideFrame& frame, std::vector<float>& points_m) {
   const int64_t strand_count = strands.strand_count();
   points_m.resize(static_cast<size_t>(strands.point_count()) * 3);
-  std::vector<float> table;
+  std::vector<Column> table;
   guide_frame_table(binding, frame, table);
   // Wisp tetrahedra: origin and rotation matrix (row-major) per tetrahedron, then the
   // transform from rest to now (translation, matrix) for bridged points.
@@ -413,13 +417,13 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     } else if (interpolated < bound) {
       // Interpolated: sum_g w_g (G_g(u) + F_g(u) d).
       int guide_count = 0;
-      const float* guide_table[3];
+      const Column* guide_table[3];
       float segments[3], weight[3];
       for (size_t k = 0; k < 3; ++k) {
         int32_t g = binding.guides[si][k];
         if (g < 0) continue;
         int64_t first = binding.guide_offsets[static_cast<size_t>(g)];
-        guide_table[guide_count] = table.data() + first * kRecord;
+        guide_table[guide_count] = table.data() + first * kColumns;
         segments[guide_count] =
             static_cast<float>(binding.guide_offsets[static_cast<size_t>(g) + 1] - first - 1);
         weight[guide_count] = binding.weights[si][k];
@@ -428,22 +432,22 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
       for (int64_t row = interpolated; row < bound; ++row) {
         const float u = binding.parameter[static_cast<size_t>(row)];
         const float* d = offset + 3 * row;
-        float x = 0, y = 0, z = 0;
+        Column sum = Column::Zero();
         for (int k = 0; k < guide_count; ++k) {
           float position = u * segments[k];
           int particle = std::min(static_cast<int>(position), static_cast<int>(segments[k]) - 1);
           float f = position - static_cast<float>(particle);
-          const float* a = guide_table[k] + particle * kRecord;
-          const float* b = a + kRecord;
-          float v[kRecord];
-          for (int c = 0; c < kRecord; ++c) v[c] = a[c] + f * (b[c] - a[c]);
-          x += weight[k] * (v[0] + v[3] * d[0] + v[4] * d[1] + v[5] * d[2]);
-          y += weight[k] * (v[1] + v[6] * d[0] + v[7] * d[1] + v[8] * d[2]);
-          z += weight[k] * (v[2] + v[9] * d[0] + v[10] * d[1] + v[11] * d[2]);
+          const Column* a = guide_table[k] + particle * kColumns;
+          const Column* b = a + kColumns;
+          Column p = a[0] + f * (b[0] - a[0]);
+          p += (a[1] + f * (b[1] - a[1])) * d[0];
+          p += (a[2] + f * (b[2] - a[2])) * d[1];
+          p += (a[3] + f * (b[3] - a[3])) * d[2];
+          sum += weight[k] * p;
         }
-        out[3 * row] = x;
-        out[3 * row + 1] = y;
-        out[3 * row + 2] = z;
+        out[3 * row] = sum[0];
+        out[3 * row + 1] = sum[1];
+        out[3 * row + 2] = sum[2];
       }
     }
     // Bound: origin + R_tet local.

@@ -22,7 +22,7 @@ FrameDatasetWriter::FrameDatasetWriter(File& file, const std::string& path, int6
     std::array<hsize_t, 3> chunk = {1, dims[1], dims[2]};
     H5Pset_chunk(properties.get(), 3, chunk.data());
     H5Pset_shuffle(properties.get());
-    H5Pset_deflate(properties.get(), kDeflateLevel);
+    H5Pset_deflate(properties.get(), kFrameDeflateLevel);
   }
   dataset_ = Handle(H5Dcreate2(file.id(), path.c_str(), file_type(Dtype::float32), space.get(),
                                H5P_DEFAULT, properties.get(), H5P_DEFAULT),
