@@ -115,7 +115,9 @@ TEST_F(InterpolateCli, AtRestTheStrandsAreTheGrownOnes) {
     int64_t by_method[4] = {0, 0, 0, 0};
     for (int32_t value : method) ++by_method[value];
     EXPECT_GT(by_method[1], 0) << name << ": no barycentric strand";
-    if (std::string(name) == "braid01") EXPECT_GT(by_method[3], 1000) << "braided strands";
+    if (std::string(name) == "braid01") {
+      EXPECT_GT(by_method[3], 400) << "braided strands";
+    }
     auto held = hair::h5::read_vector<int64_t>(file, "/strands/held_count");
     int64_t hanging = 0;
     for (int64_t s = 0; s < frames.rest.strand_count(); ++s)

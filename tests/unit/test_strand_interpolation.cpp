@@ -200,7 +200,7 @@ TEST(StrandInterpolation, AtRestReproducesTheGrownStrands) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
   std::vector<float> guide_points =
-      moved_guides(scene, [](const Vec3& p, const Vec3&) { return p; });
+      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
   std::vector<float> points;
   interpolate_frame(binding, scene.strands, {guide_points.data(), scene.wisp_rest.data(), {}},
                     points);
@@ -218,7 +218,7 @@ TEST(StrandInterpolation, AMotionOfEverythingWithTheHeadIsRigid) {
   head.rotation = Eigen::AngleAxisd(0.7, Vec3(0.3, 1, 0.2).normalized());
   head.translation_m = Vec3(0.05, -0.1, 0.2);
   std::vector<float> guide_points =
-      moved_guides(scene, [&](const Vec3& p, const Vec3&) { return head.apply(p); });
+      moved_guides(scene, [&](const Vec3& p, const Vec3&) -> Vec3 { return head.apply(p); });
   std::vector<float> wisp = scene.wisp_rest;
   for (int t = 0; t < 2; ++t) {
     float* w = wisp.data() + 7 * t;
@@ -244,7 +244,7 @@ TEST(StrandInterpolation, StrandsFollowTheirGuides) {
   // held points do not.
   const Vec3 shift(0.05, 0, 0);
   std::vector<float> carried =
-      moved_guides(scene, [&](const Vec3& p, const Vec3&) { return p + shift; });
+      moved_guides(scene, [&](const Vec3& p, const Vec3&) -> Vec3 { return p + shift; });
   std::vector<float> points;
   interpolate_frame(binding, scene.strands, {carried.data(), scene.wisp_rest.data(), {}}, points);
   for (int64_t s = 0; s < 14; ++s) {
@@ -259,8 +259,9 @@ TEST(StrandInterpolation, StrandsFollowTheirGuides) {
   // about the weighted anchor, R p + (I - R) sum_g w_g a_g.
   const Eigen::Matrix3d swing =
       Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX()).toRotationMatrix();
-  std::vector<float> swung = moved_guides(
-      scene, [&](const Vec3& p, const Vec3& anchor) { return anchor + swing * (p - anchor); });
+  std::vector<float> swung = moved_guides(scene, [&](const Vec3& p, const Vec3& anchor) -> Vec3 {
+    return anchor + swing * (p - anchor);
+  });
   interpolate_frame(binding, scene.strands, {swung.data(), scene.wisp_rest.data(), {}}, points);
   for (int64_t s = 0; s < 13; ++s) {
     Vec3 anchors = Vec3::Zero();
@@ -283,7 +284,7 @@ TEST(StrandInterpolation, BraidedPointsFollowTheirTetrahedra) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
   std::vector<float> guide_points =
-      moved_guides(scene, [](const Vec3& p, const Vec3&) { return p; });
+      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
   // The wisp's tetrahedra carried 3 cm along -Z, the head still.
   std::vector<float> wisp = scene.wisp_rest;
   wisp[2] -= 0.03f;
@@ -311,7 +312,7 @@ TEST(StrandInterpolation, BraidedPointsFollowTheirTetrahedra) {
 TEST(StrandInterpolation, TheSameWhateverTheThreadCount) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
-  std::vector<float> swung = moved_guides(scene, [](const Vec3& p, const Vec3& anchor) {
+  std::vector<float> swung = moved_guides(scene, [](const Vec3& p, const Vec3& anchor) -> Vec3 {
     return anchor + Eigen::AngleAxisd(0.4, Vec3::UnitZ()) * (p - anchor);
   });
   std::vector<float> one, two;
