@@ -165,8 +165,12 @@ TEST_F(InterpolateCli, StrandsFollowTheirGuides) {
     moved_most =
         std::max(moved_most, (hair::point_of(moved, tip) - hair::point_of(rest, tip)).norm());
   }
-  ASSERT_GT(checked, 1000);
+  ASSERT_GT(checked, 300);  // ponytail01: the tail's strands (the cap is held)
   EXPECT_GT(kept, 0.99 * static_cast<double>(checked)) << kept << " of " << checked;
+  std::printf(
+      "%lld of %lld tips kept their distance to their guides; the tips moved up to %.3f H\n",
+      static_cast<long long>(kept), static_cast<long long>(checked),
+      moved_most / frames.head_height_m);
   EXPECT_GT(moved_most, 0.1 * frames.head_height_m) << "the tips did not move";
 }
 

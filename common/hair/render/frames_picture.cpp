@@ -98,10 +98,10 @@ cv::Mat frame_picture(const FramesScene& scene, const Points3f& points, int64_t 
   } else {
     colours.resize(point_cluster.size());
     for (size_t i = 0; i < point_cluster.size(); ++i)
-      colours[i] = style_colour(frames.cluster_style[static_cast<size_t>(point_cluster[i])]);
+      colours[i] = style_colour(frames.simulated_style[static_cast<size_t>(point_cluster[i])]);
     for (int64_t s = 0; s < strands.strand_count(); ++s) {
       // A strand counts for the style of its last point: a ponytail's for its tail.
-      int8_t style = frames.cluster_style[static_cast<size_t>(
+      int8_t style = frames.simulated_style[static_cast<size_t>(
           point_cluster[static_cast<size_t>(strands.offsets[static_cast<size_t>(s) + 1] - 1)])];
       if (style >= 0 && style < 4) ++style_count[static_cast<size_t>(style)];
     }

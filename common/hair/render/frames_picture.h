@@ -12,8 +12,8 @@
 
 namespace hair {
 
-/// How a frames picture colours the strands: every point in the paper's colour of its
-/// cluster's style (styles.h5's, as frames.h5 records it), or its cluster's colour.
+/// How a frames picture colours the strands: every point in the paper's colour of the style
+/// its cluster was simulated as (/clusters/simulated_style), or its cluster's colour.
 enum class FramesColouring { style, cluster };
 
 /// "style" or "cluster"; Error::usage for another word.
