@@ -11,7 +11,8 @@
 # Environment: BIN (default build/bin), RUNS (default 5), MODELS (default "braid01
 # ponytail01 long01"), COUNTS (default "10000 100000"), PARAMS (default
 # pipelines/default), MODEL (style model, default models/style_extended.yml),
-# DURATION_S (simulated seconds, default 1).
+# DURATION_S (simulated seconds, default 1), FRAMES (the frames interpolated, default 0:11:
+# the rest state and ten frames of motion, so that 100,000 strands do not write gigabytes).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -22,6 +23,7 @@ counts=${COUNTS:-10000 100000}
 params=${PARAMS:-pipelines/default}
 model_file=${MODEL:-models/style_extended.yml}
 duration=${DURATION_S:-1}
+frames=${FRAMES:-0:11}
 work=$(mktemp -d "${TMPDIR:-/tmp}/interpolate_makehuman.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
@@ -37,7 +39,7 @@ method_counts() {
     sort | uniq -c | awk '{n[$2]=$1} END {printf "%d / %d / %d / %d\n", n["fixed"], n["barycentric"], n["clump"], n["braided"]}'
 }
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); median of $runs runs; parameters $params; style model $model_file; ${duration} s of the default motion."
+echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load average $(cut -d' ' -f1-3 /proc/loadavg) at the start; median of $runs runs; parameters $params; style model $model_file; frames $frames of ${duration} s of the default motion."
 echo
 echo "| model | strands | points | fixed / barycentric / clump / braided | max deviation at rest (m) | ms/frame, 1 thread | ms/frame, 2 threads |"
 echo "|---|---:|---:|---|---:|---:|---:|"
@@ -54,7 +56,7 @@ for model in $models; do
     declare -A ms=()
     for threads in 1 2; do
       ms[$threads]=$(for ((run = 0; run < runs; ++run)); do
-        "$bin/interpolate" "$dir/guides_$count.h5" "$strands" "$dir/styles.h5" -o "$dir/frames.h5" --params "$params/interpolate.toml" --threads "$threads" --quiet
+        "$bin/interpolate" "$dir/guides_$count.h5" "$strands" "$dir/styles.h5" -o "$dir/frames.h5" --params "$params/interpolate.toml" --frames "$frames" --threads "$threads" --quiet
         attribute "$dir/frames.h5" interpolation_ms_per_frame
       done | median | awk '{ printf "%.2f", $1 }')
     done
