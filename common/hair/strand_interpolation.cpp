@@ -18,8 +18,9 @@ using Vec3 = Eigen::Vector3d;
 /// Floats per wisp tetrahedron in a frame's table: origin (3), frame matrix (9, row-major).
 constexpr int kRecord = 12;
 /// Per guide particle in a frame's table: position, then the frame's three columns, each
-/// padded to 4 floats, so that a point is a few 4-wide SIMD operations per guide.
-constexpr int kColumns = 4;
+/// padded to 4 floats, then the same four for the step to the next particle (zero after the
+/// last), so that a point is a few 4-wide SIMD multiply-adds per guide.
+constexpr int kColumns = 8;
 using Column = Eigen::Array4f;
 
 void check_params(const InterpolationParams& p) {
@@ -349,6 +350,11 @@ void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame,
       }
       put(first + k, q);
     }
+    for (int64_t k = 0; k < count; ++k) {
+      Column* here = table.data() + (first + k) * kColumns;
+      for (int c = 0; c < 4; ++c)
+        here[4 + c] = k + 1 < count ? Column(here[kColumns + c] - here[c]) : Column::Zero();
+    }
   }
 }
 
@@ -438,11 +444,10 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
           int particle = std::min(static_cast<int>(position), static_cast<int>(segments[k]) - 1);
           float f = position - static_cast<float>(particle);
           const Column* a = guide_table[k] + particle * kColumns;
-          const Column* b = a + kColumns;
-          Column p = a[0] + f * (b[0] - a[0]);
-          p += (a[1] + f * (b[1] - a[1])) * d[0];
-          p += (a[2] + f * (b[2] - a[2])) * d[1];
-          p += (a[3] + f * (b[3] - a[3])) * d[2];
+          Column p = a[0] + f * a[4];
+          p += (a[1] + f * a[5]) * d[0];
+          p += (a[2] + f * a[6]) * d[1];
+          p += (a[3] + f * a[7]) * d[2];
           sum += weight[k] * p;
         }
         out[3 * row] = sum[0];
