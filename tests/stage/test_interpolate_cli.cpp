@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <opencv2/videoio.hpp>
 #include <string>
 #include <vector>
 
@@ -265,6 +266,17 @@ TEST_F(InterpolateCli, RendersAStillAndAVideo) {
   std::string bytes = read_file_bytes(video);
   ASSERT_GT(bytes.size(), 1000u);
   EXPECT_EQ(bytes.substr(4, 4), "ftyp") << "not an MP4 file";
+  // Read back: a frame of video per frame of frames.h5, of the size drawn.
+  cv::VideoCapture capture(video.string(), cv::CAP_FFMPEG);
+  ASSERT_TRUE(capture.isOpened());
+  int frames = 0;
+  cv::Mat image;
+  while (capture.read(image)) {
+    ++frames;
+    EXPECT_EQ(image.cols % 2, 0);
+    EXPECT_GT(image.rows, 160);
+  }
+  EXPECT_EQ(frames, 16);
   result =
       run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
                                          "--frame", "99", "-o", still.string()});
