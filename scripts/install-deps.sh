@@ -19,6 +19,7 @@ packages=(
   libnanoflann-dev nlohmann-json3-dev libssl-dev libspectra-dev
   libsuitesparse-dev liblapack-dev
   libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-ml-dev
+  libopencv-videoio-dev  # preview videos: MP4 through FFmpeg (libavcodec)
   # tests
   libgtest-dev libgmock-dev
   # h5ls, h5dump: to look into the pipeline's outputs

@@ -4,7 +4,9 @@
 // clusters of middle.h5 or the hair clusters of clusters.h5, or by hand-labelled styles
 // (--style-labels, data/labels); the grown strands of strands.h5, or, with --strands,
 // in the paper's colours of the styles of styles.h5; a contact sheet of frames of the
-// simulated guides of guides.h5. The file's `schema` attribute says which it is.
+// simulated guides of guides.h5; a frame of every strand of interpolate's frames.h5 by
+// style or cluster (a PNG), or all its frames as an MP4 video. The file's `schema`
+// attribute says which it is.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
@@ -12,6 +14,7 @@
 #include "hair/clustering_io.h"
 #include "hair/error.h"
 #include "hair/extract_io.h"
+#include "hair/frames_io.h"
 #include "hair/grow_io.h"
 #include "hair/guides_io.h"
 #include "hair/h5/attribute.h"
@@ -20,6 +23,7 @@
 #include "hair/h5/schema_validation.h"
 #include "hair/render/cluster_picture.h"
 #include "hair/render/extract_picture.h"
+#include "hair/render/frames_picture.h"
 #include "hair/render/grow_picture.h"
 #include "hair/render/guides_picture.h"
 #include "hair/render/style_picture.h"
@@ -101,6 +105,40 @@ cv::Mat picture(const hair::h5::File& file, const std::string& extract_path,
   return hair::clusters_picture(file, extract, options, before_split);
 }
 
+/// Whether `path` names an MP4 file.
+bool is_video(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".mp4") == 0;
+}
+
+/// frames.h5: a PNG of frame `frame` (of the simulation; -1 the file's middle one), or an MP4
+/// of every frame.
+void render_frames(const hair::h5::File& file, const std::string& extract_path,
+                   const std::string& colouring, int64_t frame, const std::string& output_path,
+                   hair::RenderOptions options) {
+  if (extract_path.empty())
+    throw hair::Error::usage(file.name() +
+                             " (frames) needs --extract: the extract.h5 of its model");
+  hair::FramesScene scene =
+      hair::read_frames_scene(file, hair::h5::File::open_read_only(extract_path));
+  hair::FramesColouring how = hair::parse_frames_colouring(colouring.empty() ? "style" : colouring);
+  options.views = {hair::ViewDirection::front, hair::ViewDirection::side,
+                   hair::ViewDirection::back};
+  if (is_video(output_path)) {
+    options.views = {hair::ViewDirection::front, hair::ViewDirection::side};
+    if (frame >= 0) throw hair::Error::usage("--frame is for a PNG, not a video of every frame");
+    hair::write_frames_video(scene, file, output_path, how, options);
+    return;
+  }
+  const int64_t first = scene.frames.first_frame;
+  const int64_t row = frame < 0 ? scene.frames.frame_count() / 2 : frame - first;
+  if (row < 0 || row >= scene.frames.frame_count())
+    throw hair::Error::usage(file.name() + " holds frames " + std::to_string(first) + " to " +
+                             std::to_string(first + scene.frames.frame_count() - 1) + ", not " +
+                             std::to_string(frame));
+  hair::write_png(hair::frame_picture(scene, hair::read_frame_points(file, row), row, how, options),
+                  output_path);
+}
+
 /// The picture of extract.h5 `file` coloured by the styles that the table
 /// `labels_path` gives the patches of `model`.
 cv::Mat style_label_picture(const hair::h5::File& file, const std::string& labels_path,
@@ -130,10 +168,11 @@ int main(int argc, char** argv) {
   std::string input_path, output_path, colouring, title, extract_path, strands_path, labels_path,
       model;
   int size_px = 512, panels = 0;
+  int64_t frame = -1;
   bool no_body = false;
   app.add_option("FILE", input_path,
-                 "extract.h5; or, with --extract, types.h5, middle.h5, clusters.h5, strands.h5 or "
-                 "guides.h5; or, with --extract and --strands, styles.h5")
+                 "extract.h5; or, with --extract, types.h5, middle.h5, clusters.h5, strands.h5, "
+                 "guides.h5 or frames.h5; or, with --extract and --strands, styles.h5")
       ->required();
   app.add_option("--extract", extract_path,
                  "the extract.h5 that types.h5, middle.h5, clusters.h5, strands.h5 or guides.h5 "
@@ -141,12 +180,17 @@ int main(int argc, char** argv) {
   app.add_option("--strands", strands_path,
                  "the strands.h5 that styles.h5 classified (its strands are drawn in the paper's "
                  "colours of their clusters' styles)");
-  app.add_option("-o,--output", output_path, "PNG to write")->required();
+  app.add_option("-o,--output", output_path,
+                 "PNG to write; for frames.h5 also an MP4 video of every frame (*.mp4)")
+      ->required();
+  app.add_option("--frame", frame,
+                 "frames.h5: the frame of the simulation to draw (default: the file's middle one)");
   app.add_option("--color-by", colouring,
                  "extract.h5: group (default), direction, rule or kind; clusters.h5: cluster "
                  "(default, the final clusters) or before_split (as spectral clustering found "
                  "them); strands.h5: cluster (default), rule (how each segment was grown) or "
-                 "direction. types.h5 is coloured by type, middle.h5 by middle cluster (other "
+                 "direction; frames.h5: style (default) or cluster. types.h5 is coloured by type, "
+                 "middle.h5 by middle cluster (other "
                  "groups grey)");
   auto* labels_option = app.add_option(
       "--style-labels", labels_path,
@@ -177,7 +221,14 @@ int main(int argc, char** argv) {
     options.draw_body = !no_body;
     options.title = title;
     hair::h5::File file = hair::h5::File::open_read_only(input_path);
-    if (!labels_path.empty()) {
+    const bool frames_file =
+        hair::h5::has_attribute(file, "/", "schema") &&
+        hair::h5::read_string_attribute(file, "/", "schema") == hair::kFramesSchema;
+    if (frames_file) {
+      render_frames(file, extract_path, colouring, frame, output_path, options);
+    } else if (frame >= 0 || is_video(output_path)) {
+      throw hair::Error::usage("--frame and MP4 output are for frames.h5, not " + input_path);
+    } else if (!labels_path.empty()) {
       hair::write_png(style_label_picture(file, labels_path, model, options), output_path);
     } else {
       hair::write_png(picture(file, extract_path, strands_path, colouring, panels, options),

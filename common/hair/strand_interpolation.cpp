@@ -1,0 +1,471 @@
+#include "hair/strand_interpolation.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "hair/error.h"
+#include "hair/hair_style.h"
+#include "hair/point_index.h"
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Floats per wisp tetrahedron in a frame's table: origin (3), frame matrix (9, row-major).
+constexpr int kRecord = 12;
+/// Per guide particle in a frame's table: position, then the frame's three columns, each
+/// padded to 4 floats, then the same four for the step to the next particle (zero after the
+/// last), so that a point is a few 4-wide SIMD multiply-adds per guide.
+constexpr int kColumns = 8;
+using Column = Eigen::Array4f;
+
+void check_params(const InterpolationParams& p) {
+  if (p.candidate_guides < 3)
+    throw Error::usage("candidate_guides must be at least 3, not " +
+                       std::to_string(p.candidate_guides));
+  if (!(p.min_direction_cosine >= -1 && p.min_direction_cosine <= 1))
+    throw Error::usage("min_direction_cosine must be within [-1, 1], not " +
+                       std::to_string(p.min_direction_cosine));
+  if (!(p.min_triangle_aspect >= 0 && p.min_triangle_aspect <= 1))
+    throw Error::usage("min_triangle_aspect must be within [0, 1], not " +
+                       std::to_string(p.min_triangle_aspect));
+}
+
+/// Barycentric coordinates of `p` projected onto the plane of triangle (a, b, c), clamped
+/// to the triangle (negative ones set to 0, the rest renormalised).
+std::array<double, 3> clamped_barycentric(const Vec3& p, const Vec3& a, const Vec3& b,
+                                          const Vec3& c) {
+  Vec3 v0 = b - a, v1 = c - a, v2 = p - a;
+  double d00 = v0.dot(v0), d01 = v0.dot(v1), d11 = v1.dot(v1);
+  double d20 = v2.dot(v0), d21 = v2.dot(v1);
+  double denominator = d00 * d11 - d01 * d01;
+  double v = (d11 * d20 - d01 * d21) / denominator;
+  double w = (d00 * d21 - d01 * d20) / denominator;
+  std::array<double, 3> weights = {std::max(0.0, 1 - v - w), std::max(0.0, v), std::max(0.0, w)};
+  double sum = weights[0] + weights[1] + weights[2];
+  for (double& weight : weights) weight /= sum;
+  return weights;
+}
+
+/// Smallest height of triangle (a, b, c) over its longest edge.
+double triangle_aspect(const Vec3& a, const Vec3& b, const Vec3& c) {
+  double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+  if (!(longest > 0)) return 0;
+  double twice_area = (b - a).cross(c - a).norm();
+  return twice_area / longest / longest;
+}
+
+/// The guide's point at arc parameter u in [0, 1] at rest (guides are resampled to equal
+/// arcs, so the parameter is linear in the particle index).
+Vec3 guide_rest_point(const InterpolationGuides& guides, int32_t g, double u) {
+  int64_t first = guides.offsets[static_cast<size_t>(g)];
+  int64_t segments = guides.offsets[static_cast<size_t>(g) + 1] - first - 1;
+  double x = u * static_cast<double>(segments);
+  int64_t k = std::clamp<int64_t>(static_cast<int64_t>(std::floor(x)), 0, segments - 1);
+  double f = x - static_cast<double>(k);
+  Vec3 p0 = point_of(guides.rest_points, first + k);
+  Vec3 p1 = point_of(guides.rest_points, first + k + 1);
+  return p0 + f * (p1 - p0);
+}
+
+}  // namespace
+
+const char* interpolation_method_name(InterpolationMethod method) {
+  switch (method) {
+    case InterpolationMethod::fixed:
+      return "fixed";
+    case InterpolationMethod::barycentric:
+      return "barycentric";
+    case InterpolationMethod::clump:
+      return "clump";
+    case InterpolationMethod::braided:
+      return "braided";
+  }
+  return "unknown";
+}
+
+StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,
+                           const InterpolationParams& params) {
+  check_params(params);
+  const auto& point_cluster =
+      std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
+  const int64_t strand_count = strands.strand_count();
+  const int64_t point_count = strands.point_count();
+  StrandBinding binding;
+  binding.method.assign(static_cast<size_t>(strand_count), InterpolationMethod::fixed);
+  binding.guides.assign(static_cast<size_t>(strand_count), {-1, -1, -1});
+  binding.weights.assign(static_cast<size_t>(strand_count), {0.0f, 0.0f, 0.0f});
+  binding.held_count.assign(static_cast<size_t>(strand_count), 0);
+  binding.bound_from.assign(static_cast<size_t>(strand_count), 0);
+  binding.interpolated_from.assign(static_cast<size_t>(strand_count), 0);
+  binding.parameter.assign(static_cast<size_t>(point_count), 0.0f);
+  binding.offset_m = Points3f::Zero(point_count, 3);
+  binding.tetrahedron.assign(static_cast<size_t>(point_count), -1);
+  binding.guide_offsets = guides.offsets;
+  binding.guide_rest_points = guides.rest_points;
+  binding.tetrahedron_count = guides.wisp_tetrahedron_offsets.back();
+  binding.bridged.assign(static_cast<size_t>(strand_count), 0);
+  binding.wisp_rest_frames = guides.wisp_rest_frames;
+  if (static_cast<int64_t>(binding.wisp_rest_frames.size()) != 7 * binding.tetrahedron_count)
+    throw Error::runtime("guides", "the wisps' rest frames are not 7 values per tetrahedron");
+
+  // Guides that strands can follow: strand guides with at least two particles.
+  std::vector<int32_t> usable;
+  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g) {
+    if (guides.offsets[static_cast<size_t>(g) + 1] - guides.offsets[static_cast<size_t>(g)] < 2)
+      throw Error::runtime("guides", "guide " + std::to_string(g) + " has fewer than 2 particles");
+    if (!guides.is_wisp_centre[static_cast<size_t>(g)]) usable.push_back(g);
+  }
+  Points3f anchors(static_cast<Eigen::Index>(usable.size()), 3);
+  std::vector<Vec3> direction;
+  for (size_t i = 0; i < usable.size(); ++i) {
+    int32_t g = usable[i];
+    Vec3 first = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g)]);
+    Vec3 last = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g) + 1] - 1);
+    anchors.row(static_cast<Eigen::Index>(i)) = first.cast<float>().transpose();
+    direction.push_back((last - first).normalized());
+  }
+  PointIndex index(anchors);
+
+  // Bound points: the wisps' bindings.
+  for (size_t b = 0; b < guides.binding_point.size(); ++b) {
+    int64_t row = guides.binding_point[b];
+    int32_t wisp = guides.binding_wisp[b];
+    if (row < 0 || row >= point_count || wisp < 0 ||
+        static_cast<size_t>(wisp) + 1 >= guides.wisp_tetrahedron_offsets.size())
+      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
+                                         " names a point or wisp that does not exist");
+    int32_t first = guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp)];
+    int32_t tetrahedron = first + guides.binding_tetrahedron[b];
+    if (guides.binding_tetrahedron[b] < 0 ||
+        tetrahedron >= guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp) + 1])
+      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
+                                         " names a tetrahedron its wisp does not have");
+    binding.tetrahedron[static_cast<size_t>(row)] = tetrahedron;
+    binding.offset_m.row(row) = guides.binding_local_m[b].transpose();
+  }
+
+  const int8_t fixed_style = static_cast<int8_t>(HairStyle::fixed);
+  auto style_of_point = [&](int64_t row) {
+    int32_t cluster = point_cluster[static_cast<size_t>(row)];
+    if (cluster < 0 || static_cast<size_t>(cluster) >= guides.cluster_simulated_style.size())
+      throw Error::runtime("strands", "point " + std::to_string(row) + " names cluster " +
+                                          std::to_string(cluster) + ", which the guides lack");
+    return guides.cluster_simulated_style[static_cast<size_t>(cluster)];
+  };
+
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t begin = strands.offsets[si], end = strands.offsets[si + 1];
+    const int64_t size = end - begin;
+    // Bound points run from the first one to the tip.
+    int64_t bound_from = size;
+    for (int64_t i = 0; i < size; ++i) {
+      if (binding.tetrahedron[static_cast<size_t>(begin + i)] >= 0) {
+        bound_from = i;
+        break;
+      }
+    }
+    for (int64_t i = bound_from; i < size; ++i)
+      if (binding.tetrahedron[static_cast<size_t>(begin + i)] < 0)
+        throw Error::runtime("guides", "strand " + std::to_string(s) +
+                                           ": its points bound to a wisp do not run to its tip");
+    int64_t held = 0;
+    while (held < bound_from && style_of_point(begin + held) == fixed_style) ++held;
+    binding.bound_from[si] = bound_from;
+    binding.held_count[si] = held;
+    binding.interpolated_from[si] = held;
+    for (int64_t i = 0; i < held; ++i)
+      binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+
+    if (held == bound_from) {
+      binding.method[si] = held == size ? InterpolationMethod::fixed : InterpolationMethod::braided;
+      continue;
+    }
+    if (bound_from < size) {
+      // Bridged from the head (the last held point, or the root) to the wisp.
+      const int64_t from = held > 0 ? held - 1 : 0;
+      std::vector<double> arc(static_cast<size_t>(bound_from - from + 1), 0.0);
+      for (int64_t i = from + 1; i <= bound_from; ++i)
+        arc[static_cast<size_t>(i - from)] =
+            arc[static_cast<size_t>(i - from - 1)] +
+            (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+      const int32_t tetrahedron = binding.tetrahedron[static_cast<size_t>(begin + bound_from)];
+      for (int64_t i = held; i < bound_from; ++i) {
+        const auto row = static_cast<size_t>(begin + i);
+        binding.parameter[row] =
+            arc.back() > 0 ? static_cast<float>(arc[static_cast<size_t>(i - from)] / arc.back())
+                           : 0.0f;
+        binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+        binding.tetrahedron[row] = tetrahedron;
+      }
+      binding.bridged[si] = 1;
+      binding.method[si] = InterpolationMethod::braided;
+      continue;
+    }
+    if (usable.empty()) {  // nothing to follow: held by the head
+      binding.held_count[si] = bound_from;
+      binding.interpolated_from[si] = bound_from;
+      for (int64_t i = held; i < bound_from; ++i)
+        binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+      binding.method[si] = InterpolationMethod::fixed;
+      continue;
+    }
+
+    // The anchor: the last held point, or the root; the cluster of the first moving point.
+    const int64_t anchor = held > 0 ? held - 1 : 0;
+    const Vec3 anchor_m = point_of(strands.points, begin + anchor);
+    const int32_t cluster = point_cluster[static_cast<size_t>(begin + held)];
+    std::vector<int32_t> nearest =
+        index.nearest(anchor_m.cast<float>(),
+                      std::min<int>(params.candidate_guides, static_cast<int>(usable.size())));
+    std::array<int32_t, 3> chosen = {-1, -1, -1};
+    std::array<double, 3> weights = {1, 0, 0};
+    bool barycentric = nearest.size() >= 3;
+    for (size_t k = 0; k < 3 && barycentric; ++k)
+      barycentric =
+          guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] == cluster;
+    if (barycentric) {
+      for (size_t a = 0; a < 3; ++a)
+        for (size_t b = a + 1; b < 3; ++b)
+          if (direction[static_cast<size_t>(nearest[a])].dot(
+                  direction[static_cast<size_t>(nearest[b])]) < params.min_direction_cosine)
+            barycentric = false;
+    }
+    if (barycentric) {
+      Vec3 a = anchors.row(nearest[0]).cast<double>().transpose();
+      Vec3 b = anchors.row(nearest[1]).cast<double>().transpose();
+      Vec3 c = anchors.row(nearest[2]).cast<double>().transpose();
+      if (triangle_aspect(a, b, c) < params.min_triangle_aspect) {
+        barycentric = false;
+      } else {
+        weights = clamped_barycentric(anchor_m, a, b, c);
+        for (size_t k = 0; k < 3; ++k) chosen[k] = usable[static_cast<size_t>(nearest[k])];
+      }
+    }
+    if (!barycentric) {
+      // Clump: the nearest guide of the cluster (among the candidates, else all guides),
+      // else the nearest guide.
+      int32_t best = -1;
+      for (int32_t candidate : nearest) {
+        if (guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(candidate)])] ==
+            cluster) {
+          best = candidate;
+          break;
+        }
+      }
+      if (best < 0) {
+        double best_distance = std::numeric_limits<double>::infinity();
+        for (size_t i = 0; i < usable.size(); ++i) {
+          if (guides.cluster[static_cast<size_t>(usable[i])] != cluster) continue;
+          double d =
+              (anchors.row(static_cast<Eigen::Index>(i)).cast<double>().transpose() - anchor_m)
+                  .squaredNorm();
+          if (d < best_distance) {
+            best_distance = d;
+            best = static_cast<int32_t>(i);
+          }
+        }
+      }
+      if (best < 0) best = nearest.front();
+      chosen = {usable[static_cast<size_t>(best)], -1, -1};
+      weights = {1, 0, 0};
+    }
+    binding.method[si] =
+        barycentric ? InterpolationMethod::barycentric : InterpolationMethod::clump;
+    binding.guides[si] = chosen;
+    for (size_t k = 0; k < 3; ++k) binding.weights[si][k] = static_cast<float>(weights[k]);
+    // Normalised again in float, so the weights sum to 1 as the frames use them.
+    float sum = binding.weights[si][0] + binding.weights[si][1] + binding.weights[si][2];
+    for (float& weight : binding.weights[si]) weight /= sum;
+
+    // Arc parameter from the anchor to the tip, and the rest offsets from the weighted
+    // guides at that parameter.
+    std::vector<double> arc(static_cast<size_t>(size - anchor), 0.0);
+    for (int64_t i = anchor + 1; i < size; ++i)
+      arc[static_cast<size_t>(i - anchor)] =
+          arc[static_cast<size_t>(i - anchor - 1)] +
+          (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+    const double length = arc.back();
+    for (int64_t i = held; i < bound_from; ++i) {
+      double u = length > 0 ? arc[static_cast<size_t>(i - anchor)] / length : 0.0;
+      auto uf = static_cast<float>(u);
+      Vec3 blended = Vec3::Zero();
+      for (size_t k = 0; k < 3; ++k)
+        if (chosen[k] >= 0)
+          blended += static_cast<double>(binding.weights[si][k]) *
+                     guide_rest_point(guides, chosen[k], static_cast<double>(uf));
+      binding.parameter[static_cast<size_t>(begin + i)] = uf;
+      binding.offset_m.row(begin + i) =
+          (point_of(strands.points, begin + i) - blended).cast<float>().transpose();
+    }
+  }
+  return binding;
+}
+
+namespace {
+
+/// Per guide particle of one frame: its position and frame (see interpolate_frame()).
+void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame,
+                       std::vector<Column>& table) {
+  const float* rest_points = binding.guide_rest_points.data();
+  const int64_t guides = static_cast<int64_t>(binding.guide_offsets.size()) - 1;
+  table.resize(static_cast<size_t>(binding.guide_rest_points.rows()) * kColumns);
+  const Eigen::Quaterniond head = frame.head.rotation.normalized();
+  auto put = [&](int64_t row, const Eigen::Quaterniond& q) {
+    Eigen::Matrix3f m = q.toRotationMatrix().cast<float>();
+    Column* out = table.data() + row * kColumns;
+    const float* p = frame.guide_points_m + 3 * row;
+    out[0] = Column(p[0], p[1], p[2], 0);
+    for (int c = 0; c < 3; ++c) out[1 + c] = Column(m(0, c), m(1, c), m(2, c), 0);
+  };
+  std::vector<Eigen::Quaterniond> segment;
+  for (int64_t g = 0; g < guides; ++g) {
+    const int64_t first = binding.guide_offsets[static_cast<size_t>(g)];
+    const int64_t count = binding.guide_offsets[static_cast<size_t>(g) + 1] - first;
+    segment.resize(static_cast<size_t>(count - 1));
+    for (int64_t j = 0; j + 1 < count; ++j) {
+      const float* r0 = rest_points + 3 * (first + j);
+      const float* p0 = frame.guide_points_m + 3 * (first + j);
+      Vec3 rest_direction(r0[3] - r0[0], r0[4] - r0[1], r0[5] - r0[2]);
+      Vec3 now(p0[3] - p0[0], p0[4] - p0[1], p0[5] - p0[2]);
+      Vec3 carried = head * rest_direction;
+      Eigen::Quaterniond turn = Eigen::Quaterniond::Identity();
+      if (carried.squaredNorm() > 0 && now.squaredNorm() > 0)
+        turn = Eigen::Quaterniond::FromTwoVectors(carried, now);
+      segment[static_cast<size_t>(j)] = (turn * head).normalized();
+    }
+    put(first, head);
+    for (int64_t k = 1; k < count; ++k) {
+      Eigen::Quaterniond q = segment[static_cast<size_t>(k - 1)];
+      if (k + 1 < count) {
+        Eigen::Quaterniond next = segment[static_cast<size_t>(k)];
+        if (q.dot(next) < 0) next.coeffs() = -next.coeffs();
+        q.coeffs() += next.coeffs();
+        q.normalize();
+      }
+      put(first + k, q);
+    }
+    for (int64_t k = 0; k < count; ++k) {
+      Column* here = table.data() + (first + k) * kColumns;
+      for (int c = 0; c < 4; ++c)
+        here[4 + c] = k + 1 < count ? Column(here[kColumns + c] - here[c]) : Column::Zero();
+    }
+  }
+}
+
+}  // namespace
+
+void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
+                       const GuideFrame& frame, std::vector<float>& points_m) {
+  const int64_t strand_count = strands.strand_count();
+  points_m.resize(static_cast<size_t>(strands.point_count()) * 3);
+  std::vector<Column> table;
+  guide_frame_table(binding, frame, table);
+  // Wisp tetrahedra: origin and rotation matrix (row-major) per tetrahedron, then the
+  // transform from rest to now (translation, matrix) for bridged points.
+  std::vector<float> tetrahedra(static_cast<size_t>(binding.tetrahedron_count) * 2 * kRecord);
+  for (int64_t t = 0; t < binding.tetrahedron_count; ++t) {
+    const float* in = frame.wisp_frames + 7 * t;
+    const float* rest = binding.wisp_rest_frames.data() + 7 * t;
+    Eigen::Matrix3f m =
+        Eigen::Quaternionf(in[3], in[4], in[5], in[6]).normalized().toRotationMatrix();
+    Eigen::Matrix3f m_rest =
+        Eigen::Quaternionf(rest[3], rest[4], rest[5], rest[6]).normalized().toRotationMatrix();
+    Eigen::Matrix3f delta = m * m_rest.transpose();
+    Eigen::Vector3f shift =
+        Eigen::Vector3f(in[0], in[1], in[2]) - delta * Eigen::Vector3f(rest[0], rest[1], rest[2]);
+    float* out = tetrahedra.data() + t * 2 * kRecord;
+    for (int axis = 0; axis < 3; ++axis) out[axis] = in[axis];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) out[3 + 3 * r + c] = m(r, c);
+    for (int axis = 0; axis < 3; ++axis) out[kRecord + axis] = shift[axis];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) out[kRecord + 3 + 3 * r + c] = delta(r, c);
+  }
+  const Eigen::Matrix3f head = frame.head.rotation.normalized().toRotationMatrix().cast<float>();
+  const Eigen::Vector3f head_t = frame.head.translation_m.cast<float>();
+  const float* offset = binding.offset_m.data();
+  float* out = points_m.data();
+
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t begin = strands.offsets[si];
+    const int64_t end = strands.offsets[si + 1];
+    const int64_t interpolated = begin + binding.interpolated_from[si];
+    const int64_t bound = begin + binding.bound_from[si];
+    // Held: R p + t.
+    for (int64_t row = begin; row < interpolated; ++row) {
+      const float* p = offset + 3 * row;
+      for (int r = 0; r < 3; ++r)
+        out[3 * row + r] = head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
+    }
+    // Bridged: (1 - s) (R p + t) + s (D p + c) for the tetrahedron's D, c.
+    if (binding.bridged[si]) {
+      for (int64_t row = interpolated; row < bound; ++row) {
+        const float share = binding.parameter[static_cast<size_t>(row)];
+        const float* p = offset + 3 * row;
+        const float* t =
+            tetrahedra.data() +
+            static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * 2 * kRecord +
+            kRecord;
+        for (int r = 0; r < 3; ++r) {
+          float with_head = head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
+          float with_wisp = t[r] + t[3 + 3 * r] * p[0] + t[4 + 3 * r] * p[1] + t[5 + 3 * r] * p[2];
+          out[3 * row + r] = (1 - share) * with_head + share * with_wisp;
+        }
+      }
+    } else if (interpolated < bound) {
+      // Interpolated: sum_g w_g (G_g(u) + F_g(u) d).
+      int guide_count = 0;
+      const Column* guide_table[3];
+      float segments[3], weight[3];
+      for (size_t k = 0; k < 3; ++k) {
+        int32_t g = binding.guides[si][k];
+        if (g < 0) continue;
+        int64_t first = binding.guide_offsets[static_cast<size_t>(g)];
+        guide_table[guide_count] = table.data() + first * kColumns;
+        segments[guide_count] =
+            static_cast<float>(binding.guide_offsets[static_cast<size_t>(g) + 1] - first - 1);
+        weight[guide_count] = binding.weights[si][k];
+        ++guide_count;
+      }
+      for (int64_t row = interpolated; row < bound; ++row) {
+        const float u = binding.parameter[static_cast<size_t>(row)];
+        const float* d = offset + 3 * row;
+        Column sum = Column::Zero();
+        for (int k = 0; k < guide_count; ++k) {
+          float position = u * segments[k];
+          int particle = std::min(static_cast<int>(position), static_cast<int>(segments[k]) - 1);
+          float f = position - static_cast<float>(particle);
+          const Column* a = guide_table[k] + particle * kColumns;
+          Column p = a[0] + f * a[4];
+          p += (a[1] + f * a[5]) * d[0];
+          p += (a[2] + f * a[6]) * d[1];
+          p += (a[3] + f * a[7]) * d[2];
+          sum += weight[k] * p;
+        }
+        out[3 * row] = sum[0];
+        out[3 * row + 1] = sum[1];
+        out[3 * row + 2] = sum[2];
+      }
+    }
+    // Bound: origin + R_tet local.
+    for (int64_t row = bound; row < end; ++row) {
+      const float* t =
+          tetrahedra.data() +
+          static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * 2 * kRecord;
+      const float* local = offset + 3 * row;
+      for (int r = 0; r < 3; ++r)
+        out[3 * row + r] =
+            t[r] + t[3 + 3 * r] * local[0] + t[4 + 3 * r] * local[1] + t[5 + 3 * r] * local[2];
+    }
+  }
+}
+
+}  // namespace hair

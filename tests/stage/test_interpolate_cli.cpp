@@ -1,0 +1,319 @@
+// interpolate as a subprocess on the braid and ponytail samples after extract to
+// simulate: a valid frames.h5 whose frame 0 is the grown strands (the error at rest), whose
+// strands follow their guides, a frame range equal to the same frames of a full run,
+// byte-identical reruns whatever the thread count; hair-export's OBJ and .hair round trips
+// and a well-formed .usda listing every strand; hair-render's still and MP4; bad input
+// (exit 2, one line, no output, an existing output untouched).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <opencv2/videoio.hpp>
+#include <string>
+#include <vector>
+
+#include "hair/frames_io.h"
+#include "hair/h5/attribute.h"
+#include "hair/h5/dataset.h"
+#include "hair/h5/file.h"
+#include "hair/strand_export.h"
+#include "stage/clean_failures.h"
+#include "stage/sample_pipeline.h"
+#include "support/run_command.h"
+#include "support/usda_check.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using hair::test::kBin;
+using hair::test::kSamples;
+using hair::test::read_file_bytes;
+using hair::test::run_command;
+using hair::test::run_stage;
+using hair::test::SampleOutputs;
+using hair::test::TemporaryDirectory;
+
+const fs::path kModel = fs::path(HAIR_SOURCE_DIR) / "models" / "style_extended.yml";
+
+/// A sample's files up to guides.h5 and frames.h5 (half a second of the shake).
+struct Model {
+  SampleOutputs out;
+  fs::path styles, guides, frames;
+};
+
+class InterpolateCli : public ::testing::Test {
+ protected:
+  static void TearDownTestSuite() { directory_.reset(); }
+  static const TemporaryDirectory& directory() {
+    if (!directory_) directory_ = std::make_unique<TemporaryDirectory>("interpolate_cli");
+    return *directory_;
+  }
+  static Model model(const std::string& name) {
+    Model m;
+    m.out = hair::test::run_sample_pipeline(directory() / name, kSamples / "hair" / (name + ".obj"),
+                                            10000);
+    fs::path folder = m.out.strands.parent_path();
+    m.styles = folder / "styles.h5";
+    m.guides = folder / "guides.h5";
+    m.frames = folder / "frames.h5";
+    if (!fs::exists(m.styles))
+      run_stage("classify",
+                {m.out.extract.string(), m.out.clusters.string(), m.out.strands.string(), "--model",
+                 kModel.string(), "-o", m.styles.string()});
+    if (!fs::exists(m.guides))
+      run_stage("simulate", {m.out.extract.string(), m.out.strands.string(), m.styles.string(),
+                             "--duration_s", "0.5", "-o", m.guides.string()});
+    if (!fs::exists(m.frames))
+      run_stage("interpolate", {m.guides.string(), m.out.strands.string(), m.styles.string(), "-o",
+                                m.frames.string()});
+    return m;
+  }
+
+ private:
+  static std::unique_ptr<TemporaryDirectory> directory_;
+};
+std::unique_ptr<TemporaryDirectory> InterpolateCli::directory_;
+
+/// Every value of every frame finite, and the file valid.
+void expect_valid(const fs::path& path) {
+  auto inspect = run_command(kBin / "hair-inspect", {path.string()});
+  EXPECT_EQ(inspect.exit_code, 0) << inspect.out << inspect.err;
+  std::vector<std::string> report = hair::test::text_lines(inspect.out);
+  ASSERT_FALSE(report.empty());
+  EXPECT_EQ(report.back(), "valid: hairstyle.frames v1");
+}
+
+/// Largest distance between frame `row`'s points and the rest points carried by the head.
+double deviation_from_rest(const hair::h5::File& file, const hair::FramesFile& frames,
+                           int64_t row) {
+  hair::Points3f points = hair::read_frame_points(file, row);
+  double worst = 0;
+  for (int64_t p = 0; p < frames.rest.point_count(); ++p)
+    worst = std::max(
+        worst, (hair::point_of(points, p) -
+                frames.head[static_cast<size_t>(row)].apply(hair::point_of(frames.rest.points, p)))
+                   .norm());
+  return worst;
+}
+
+TEST_F(InterpolateCli, AtRestTheStrandsAreTheGrownOnes) {
+  for (const char* name : {"ponytail01", "braid01"}) {
+    Model m = model(name);
+    expect_valid(m.frames);
+    hair::h5::File file = hair::h5::File::open_read_only(m.frames);
+    hair::FramesFile frames = hair::read_frames_file(file);
+    EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "interpolate");
+    EXPECT_EQ(frames.frame_count(), 16);
+    EXPECT_EQ(frames.rest.strand_count(), 10000);
+    const double h = frames.head_height_m;
+    double at_rest = deviation_from_rest(file, frames, 0);
+    EXPECT_LT(at_rest, 1e-5 * h) << name;  // float rounding only
+    EXPECT_NEAR(hair::h5::read_double_attribute(file, "/", "rest_max_deviation_m"), at_rest, 1e-9);
+    // The head moves: later frames are not the rest state.
+    EXPECT_GT(deviation_from_rest(file, frames, frames.frame_count() - 1), 0.05 * h) << name;
+    const auto& method = std::get<std::vector<int32_t>>(frames.rest.strand_attributes.at("method"));
+    int64_t by_method[4] = {0, 0, 0, 0};
+    for (int32_t value : method) ++by_method[value];
+    EXPECT_GT(by_method[1], 0) << name << ": no barycentric strand";
+    if (std::string(name) == "braid01") {
+      EXPECT_GT(by_method[3], 400) << "braided strands";
+    }
+    auto held = hair::h5::read_vector<int64_t>(file, "/strands/held_count");
+    int64_t hanging = 0;
+    for (int64_t s = 0; s < frames.rest.strand_count(); ++s)
+      hanging += held[static_cast<size_t>(s)] > 0 && method[static_cast<size_t>(s)] != 0;
+    EXPECT_GT(hanging, 0) << name << ": no strand leaves a fixed cap";
+  }
+}
+
+TEST_F(InterpolateCli, StrandsFollowTheirGuides) {
+  Model m = model("ponytail01");
+  hair::h5::File file = hair::h5::File::open_read_only(m.frames);
+  hair::h5::File guides = hair::h5::File::open_read_only(m.guides);
+  hair::FramesFile frames = hair::read_frames_file(file);
+  auto guide_offsets = hair::h5::read_vector<int64_t>(guides, "/guides/offsets");
+  auto strand_guides = hair::h5::read_array<int32_t>(file, "/strands/guides").values;
+  auto weights = hair::h5::read_array<float>(file, "/strands/weights").values;
+  const auto& method = std::get<std::vector<int32_t>>(frames.rest.strand_attributes.at("method"));
+  const int64_t last = frames.frame_count() - 1;
+  hair::Points3f rest = hair::read_frame_points(file, 0),
+                 moved = hair::read_frame_points(file, last);
+  hair::h5::Array<float> guide_frames = hair::h5::read_array<float>(guides, "/frames/guide_points");
+  const int64_t guide_points = guide_frames.shape[1];
+  auto guide_tip = [&](int64_t frame, int64_t s) {
+    Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+    for (size_t k = 0; k < 3; ++k) {
+      int32_t g = strand_guides[3 * static_cast<size_t>(s) + k];
+      if (g < 0) continue;
+      int64_t row = guide_offsets[static_cast<size_t>(g) + 1] - 1;
+      const float* p = guide_frames.values.data() + 3 * (frame * guide_points + row);
+      tip += weights[3 * static_cast<size_t>(s) + k] * Eigen::Vector3d(p[0], p[1], p[2]);
+    }
+    return tip;
+  };
+  // A strand's tip moves as its guides' weighted tip does, give or take its offset turning
+  // with them: the distance between the two stays what it was at rest.
+  int64_t checked = 0, kept = 0;
+  double moved_most = 0;
+  for (int64_t s = 0; s < frames.rest.strand_count(); ++s) {
+    if (method[static_cast<size_t>(s)] != 1 && method[static_cast<size_t>(s)] != 2) continue;
+    int64_t tip = frames.rest.offsets[static_cast<size_t>(s) + 1] - 1;
+    double before = (hair::point_of(rest, tip) - guide_tip(0, s)).norm();
+    double after = (hair::point_of(moved, tip) - guide_tip(last, s)).norm();
+    ++checked;
+    kept += std::abs(after - before) <= 0.02 * frames.head_height_m + 0.05 * before;
+    moved_most =
+        std::max(moved_most, (hair::point_of(moved, tip) - hair::point_of(rest, tip)).norm());
+  }
+  ASSERT_GT(checked, 300);  // ponytail01: the tail's strands (the cap is held)
+  EXPECT_GT(kept, 0.99 * static_cast<double>(checked)) << kept << " of " << checked;
+  std::printf(
+      "%lld of %lld tips kept their distance to their guides; the tips moved up to %.3f H\n",
+      static_cast<long long>(kept), static_cast<long long>(checked),
+      moved_most / frames.head_height_m);
+  EXPECT_GT(moved_most, 0.1 * frames.head_height_m) << "the tips did not move";
+}
+
+TEST_F(InterpolateCli, AFrameRangeIsThoseFramesOfAFullRun) {
+  Model m = model("braid01");
+  fs::path part = directory() / "part.h5";
+  run_stage("interpolate", {m.guides.string(), m.out.strands.string(), m.styles.string(),
+                            "--frames", "5:9", "-o", part.string()});
+  hair::h5::File whole_file = hair::h5::File::open_read_only(m.frames);
+  hair::h5::File part_file = hair::h5::File::open_read_only(part);
+  hair::FramesFile frames = hair::read_frames_file(part_file);
+  ASSERT_EQ(frames.frame_count(), 4);
+  EXPECT_EQ(frames.first_frame, 5);
+  EXPECT_EQ(frames.index.front(), 5);
+  for (int64_t row = 0; row < 4; ++row)
+    EXPECT_TRUE(hair::read_frame_points(part_file, row) ==
+                hair::read_frame_points(whole_file, row + 5))
+        << "row " << row;
+}
+
+TEST_F(InterpolateCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
+  Model m = model("ponytail01");
+  const std::string first = read_file_bytes(m.frames);
+  for (const char* threads : {"1", "2"}) {
+    fs::path again = directory() / "again.h5";
+    run_stage("interpolate", {m.guides.string(), m.out.strands.string(), m.styles.string(),
+                              "--threads", threads, "-o", again.string()});
+    EXPECT_TRUE(read_file_bytes(again) == first) << threads << " thread(s) wrote other bytes";
+    fs::remove(again);
+  }
+}
+
+TEST_F(InterpolateCli, ExportsKeepThePoints) {
+  Model m = model("braid01");
+  fs::path folder = directory() / "exports";
+  fs::create_directories(folder);
+  auto result = run_command(kBin / "hair-export",
+                            {m.frames.string(), "--frames", "2:5", "--obj",
+                             (folder / "obj").string(), "--usda", (folder / "braid.usda").string(),
+                             "--hair", (folder / "frame3.hair").string(), "--frame", "3"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  hair::h5::File file = hair::h5::File::open_read_only(m.frames);
+  hair::FramesFile frames = hair::read_frames_file(file);
+  for (int64_t frame = 2; frame < 5; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04lld.obj", static_cast<long long>(frame));
+    hair::StrandSet obj = hair::read_obj_polylines(folder / "obj" / name);
+    EXPECT_EQ(obj.offsets, frames.rest.offsets);
+    EXPECT_TRUE(obj.points == hair::read_frame_points(file, frame)) << name;
+  }
+  hair::StrandSet hair_file = hair::read_cyhair(folder / "frame3.hair");
+  EXPECT_EQ(hair_file.offsets, frames.rest.offsets);
+  EXPECT_TRUE(hair_file.points == hair::read_frame_points(file, 3));
+
+  hair::test::UsdaLayer layer = hair::test::parse_usda(read_file_bytes(folder / "braid.usda"));
+  EXPECT_EQ(layer.metadata["upAxis"], "Y");
+  EXPECT_EQ(layer.metadata["metersPerUnit"], "1");
+  EXPECT_EQ(layer.metadata["startTimeCode"], "2");
+  EXPECT_EQ(layer.metadata["endTimeCode"], "4");
+  ASSERT_EQ(layer.prims.size(), 2u);
+  EXPECT_EQ(layer.prims[1], "BasisCurves Strands");
+  const int64_t strands = frames.rest.strand_count(), points = frames.rest.point_count();
+  const std::vector<double>& counts = layer.arrays["curveVertexCounts"];
+  ASSERT_EQ(static_cast<int64_t>(counts.size()), strands);
+  for (int64_t s = 0; s < strands; ++s)
+    EXPECT_EQ(counts[static_cast<size_t>(s)], static_cast<double>(frames.rest.strand_size(s)));
+  EXPECT_EQ(static_cast<int64_t>(layer.arrays["widths"].size()), points);
+  for (const char* primvar :
+       {"primvars:groom_id", "primvars:groom_guide", "primvars:cluster", "primvars:style"})
+    EXPECT_EQ(static_cast<int64_t>(layer.arrays[primvar].size()), strands) << primvar;
+  EXPECT_EQ(static_cast<int64_t>(layer.arrays["primvars:groom_root_uv"].size()), 2 * strands);
+  ASSERT_EQ(layer.point_samples.size(), 3u);
+  hair::Points3f frame4 = hair::read_frame_points(file, 4);
+  const std::vector<double>& sample = layer.point_samples.at(4);
+  ASSERT_EQ(static_cast<int64_t>(sample.size()), 3 * points);
+  for (int64_t i = 0; i < 3 * points; ++i)
+    ASSERT_EQ(static_cast<float>(sample[static_cast<size_t>(i)]), frame4.data()[i]) << i;
+}
+
+TEST_F(InterpolateCli, RendersAStillAndAVideo) {
+  Model m = model("ponytail01");
+  fs::path still = directory() / "still.png", video = directory() / "preview.mp4";
+  auto result = run_command(kBin / "hair-render",
+                            {m.frames.string(), "--extract", m.out.extract.string(), "--frame", "8",
+                             "--color-by", "cluster", "-o", still.string(), "--size", "200"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_GT(fs::file_size(still), 1000u);
+  result =
+      run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
+                                         "-o", video.string(), "--size", "160"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::string bytes = read_file_bytes(video);
+  ASSERT_GT(bytes.size(), 1000u);
+  EXPECT_EQ(bytes.substr(4, 4), "ftyp") << "not an MP4 file";
+  // Read back: a frame of video per frame of frames.h5, of the size drawn.
+  cv::VideoCapture capture(video.string(), cv::CAP_FFMPEG);
+  ASSERT_TRUE(capture.isOpened());
+  int frames = 0;
+  cv::Mat image;
+  while (capture.read(image)) {
+    ++frames;
+    EXPECT_EQ(image.cols % 2, 0);
+    EXPECT_GT(image.rows, 160);
+  }
+  EXPECT_EQ(frames, 16);
+  result =
+      run_command(kBin / "hair-render", {m.frames.string(), "--extract", m.out.extract.string(),
+                                         "--frame", "99", "-o", still.string()});
+  EXPECT_EQ(result.exit_code, 2);
+}
+
+TEST_F(InterpolateCli, WrongInputsFailCleanly) {
+  Model braid = model("braid01"), ponytail = model("ponytail01");
+  const TemporaryDirectory& directory = InterpolateCli::directory();
+  hair::test::write_text_file(directory / "text.h5", "not HDF5\n");
+  const std::string guides = braid.guides.string(), strands = braid.out.strands.string(),
+                    styles = braid.styles.string();
+  const std::vector<hair::test::FailureCase> cases = {
+      {{(directory / "missing.h5").string(), strands, styles}, "missing.h5"},
+      {{(directory / "text.h5").string(), strands, styles}, "not an HDF5 file"},
+      {{strands, strands, styles}, "expected hairstyle.guides"},
+      {{guides, styles, styles}, "expected hairstyle.strands"},
+      {{guides, strands, strands}, "expected hairstyle.styles"},
+      {{guides, ponytail.out.strands.string(), ponytail.styles.string()}, "another model"},
+      {{hair::test::copy_with_nan(braid.guides, directory / "nan_guides.h5", "/guides/rest_points")
+            .string(),
+        strands, styles},
+       "/guides/rest_points: expected finite values"},
+      {{guides,
+        hair::test::copy_with_nan(braid.out.strands, directory / "nan_strands.h5",
+                                  "/strands/points")
+            .string(),
+        styles},
+       "/strands/points: expected finite values"},
+      {{guides, strands, styles, "--frames", "9:3"}, "--frames"},
+      {{guides, strands, styles, "--frames", "0:99"}, "past the last frame"},
+      {{guides, strands, styles, "--frames", "abc"}, "--frames"},
+      {{guides, strands, styles, "--candidate_guides", "2"}, "candidate_guides"},
+      {{guides, strands}, "STYLES_H5"},
+  };
+  hair::test::expect_clean_failures(kBin / "interpolate", "interpolate", cases,
+                                    directory / "failures", braid.frames);
+}
+
+}  // namespace

@@ -1,0 +1,164 @@
+// hair-export: the strands of interpolate's frames.h5 in formats that hair tools read:
+// ASCII USD (.usda) BasisCurves with time-sampled points and the Alembic groom attributes
+// as primvars, OBJ polylines (one file per frame) and cyHair .hair (one frame).
+// docs/interpolate.md describes the formats and the mapping to the groom conventions.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <numbers>
+
+#include "hair/error.h"
+#include "hair/frame_range.h"
+#include "hair/frames_io.h"
+#include "hair/h5/file.h"
+#include "hair/strand_export.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Rows of frames.h5 for guides.h5 frames `range` (which must lie within the file's).
+std::vector<int64_t> rows_of(const hair::FramesFile& frames, const hair::FrameRange& range,
+                             const std::string& source) {
+  const int64_t first = frames.first_frame, end = first + frames.frame_count();
+  if (range.first < first || range.end > end)
+    throw hair::Error::usage(source + " holds frames " + std::to_string(first) + " to " +
+                             std::to_string(end - 1) + " only, not " + std::to_string(range.first) +
+                             " to " + std::to_string(range.end - 1));
+  std::vector<int64_t> rows;
+  for (int64_t f = range.first; f < range.end; ++f) rows.push_back(f - first);
+  return rows;
+}
+
+/// Width per point: `root_m` at the root tapering linearly to a third of it at the tip.
+std::vector<float> tapered_widths(const hair::StrandSet& strands, double root_m) {
+  std::vector<float> widths(static_cast<size_t>(strands.point_count()));
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    const int64_t begin = strands.offsets[static_cast<size_t>(s)];
+    const int64_t size = strands.strand_size(s);
+    for (int64_t i = 0; i < size; ++i)
+      widths[static_cast<size_t>(begin + i)] = static_cast<float>(
+          root_m * (1.0 - 2.0 / 3.0 * static_cast<double>(i) /
+                              static_cast<double>(std::max<int64_t>(1, size - 1))));
+  }
+  return widths;
+}
+
+/// Root UVs: a spherical projection of the roots about their centroid, u the angle about
+/// +Y from +Z (0.5 at the face), v the height from the lowest root (0) to the highest (1).
+std::vector<Eigen::Vector2f> root_uvs(const hair::StrandSet& strands) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double low = INFINITY, high = -INFINITY;
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    Eigen::Vector3d root = hair::point_of(strands.points, strands.offsets[static_cast<size_t>(s)]);
+    centre += root;
+    low = std::min(low, root.y());
+    high = std::max(high, root.y());
+  }
+  centre /= static_cast<double>(std::max<int64_t>(1, strands.strand_count()));
+  std::vector<Eigen::Vector2f> uv;
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    Eigen::Vector3d root =
+        hair::point_of(strands.points, strands.offsets[static_cast<size_t>(s)]) - centre;
+    double u = 0.5 + std::atan2(root.x(), root.z()) / (2 * std::numbers::pi);
+    double v = high > low ? (root.y() + centre.y() - low) / (high - low) : 0.0;
+    uv.emplace_back(static_cast<float>(u), static_cast<float>(v));
+  }
+  return uv;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app("Export the strands of frames.h5 (interpolate) to USD, OBJ and cyHair.",
+               "hair-export");
+  std::string input_path, usda_path, obj_dir, hair_path, frames_text;
+  int64_t frame = -1;
+  double width_m = 8e-5;
+  app.add_option("FRAMES_H5", input_path, "frames.h5 from the interpolate stage")->required();
+  app.add_option("--usda", usda_path,
+                 "ASCII USD file: BasisCurves with the points of every frame of --frames as "
+                 "time samples, and the groom attributes");
+  app.add_option("--obj", obj_dir,
+                 "folder for OBJ polylines, one file per frame of --frames "
+                 "(frame_NNNN.obj, NNNN the simulation's frame)");
+  app.add_option("--hair", hair_path, "cyHair .hair file of the frame --frame");
+  app.add_option("--frames", frames_text,
+                 "frames of the simulation to export (A:B is A to B-1, A:, :B or N); all the "
+                 "file holds by default");
+  app.add_option("--frame", frame, "the frame of --hair (default: the file's first)");
+  app.add_option("--width_m", width_m,
+                 "strand width at the root, metres (a third of it at the tip)")
+      ->check(CLI::PositiveNumber);
+  try {
+    app.parse(argc, argv);
+    if (usda_path.empty() && obj_dir.empty() && hair_path.empty())
+      throw CLI::ValidationError("nothing to do: give --usda, --obj or --hair");
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "hair-export: error: " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    hair::h5::File file = hair::h5::File::open_read_only(input_path);
+    hair::FramesFile frames = hair::read_frames_file(file);
+    const int64_t last = frames.first_frame + frames.frame_count();
+    hair::FrameRange range = frames_text.empty() ? hair::FrameRange{frames.first_frame, last}
+                                                 : hair::parse_frame_range(frames_text, last);
+    std::vector<int64_t> rows = rows_of(frames, range, input_path);
+    hair::StrandSet strands = frames.rest;
+    const std::string note = "from " + input_path + ", motion " + frames.motion;
+    std::vector<float> widths = tapered_widths(strands, width_m);
+
+    if (!usda_path.empty()) {
+      hair::UsdaCurves curves;
+      curves.offsets = strands.offsets;
+      const auto& cluster = std::get<std::vector<int32_t>>(strands.strand_attributes.at("cluster"));
+      const auto& point_cluster =
+          std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
+      curves.cluster = cluster;
+      curves.groom_guide = std::get<std::vector<int32_t>>(strands.strand_attributes.at("is_guide"));
+      for (int64_t s = 0; s < strands.strand_count(); ++s) {
+        curves.groom_id.push_back(static_cast<int32_t>(s));
+        int32_t tip_cluster =
+            point_cluster[static_cast<size_t>(strands.offsets[static_cast<size_t>(s) + 1] - 1)];
+        curves.style.push_back(frames.cluster_style[static_cast<size_t>(tip_cluster)]);
+      }
+      curves.root_uv = root_uvs(strands);
+      curves.width_m = widths;
+      curves.fps = frames.fps;
+      curves.comment = note;
+      std::vector<int64_t> codes;
+      for (int64_t row : rows) codes.push_back(frames.index[static_cast<size_t>(row)]);
+      hair::write_usda(usda_path, curves, codes,
+                       [&](size_t k) { return hair::read_frame_points(file, rows[k]); });
+    }
+    if (!obj_dir.empty()) {
+      fs::create_directories(obj_dir);
+      for (int64_t row : rows) {
+        strands.points = hair::read_frame_points(file, row);
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04lld.obj",
+                      static_cast<long long>(frames.index[static_cast<size_t>(row)]));
+        hair::write_obj_polylines(
+            fs::path(obj_dir) / name, strands,
+            note + ", frame " + std::to_string(frames.index[static_cast<size_t>(row)]));
+      }
+    }
+    if (!hair_path.empty()) {
+      int64_t which = frame < 0 ? frames.first_frame : frame;
+      std::vector<int64_t> one = rows_of(frames, {which, which + 1}, input_path);
+      strands.points = hair::read_frame_points(file, one.front());
+      hair::write_cyhair(hair_path, strands, widths,
+                         "hairstyle frame " + std::to_string(which) + ", metres");
+    }
+  } catch (const hair::Error& e) {
+    std::cerr << "hair-export: error: " << e.what() << "\n";
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "hair-export: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
