@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hair/barycentric.h"
+
 namespace hair {
 namespace {
 
@@ -17,24 +19,6 @@ constexpr std::array<std::array<int, 3>, 4> kOppositeFace{
     {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
 /// The three pairs of opposite edges: (01, 23), (02, 13), (03, 12).
 constexpr std::array<std::array<int, 4>, 3> kEdgePair{{{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}}};
-
-/// Barycentric coordinates of the projection of p on the triangle (a, b, c), clamped into
-/// the triangle (negative ones set to zero, then renormalised).
-std::array<double, 3> clamped_barycentric(const Vec3& p, const Vec3& a, const Vec3& b,
-                                          const Vec3& c) {
-  Vec3 e0 = b - a, e1 = c - a, d = p - a;
-  double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1);
-  double d20 = d.dot(e0), d21 = d.dot(e1);
-  double denominator = d00 * d11 - d01 * d01;
-  if (!(denominator > 0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
-  double v = (d11 * d20 - d01 * d21) / denominator;
-  double w = (d00 * d21 - d01 * d20) / denominator;
-  std::array<double, 3> weight{1 - v - w, v, w};
-  double sum = 0;
-  for (double& x : weight) sum += (x = std::max(x, 0.0));
-  for (double& x : weight) x /= sum;
-  return weight;
-}
 
 /// Parameters (s, t) in [0, 1] of the closest points of the segments a + s e1, c + t e2.
 std::pair<double, double> closest_segment_parameters(const Vec3& a, const Vec3& e1, const Vec3& c,

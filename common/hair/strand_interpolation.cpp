@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "hair/barycentric.h"
 #include "hair/error.h"
 #include "hair/hair_style.h"
 #include "hair/point_index.h"
@@ -33,22 +34,6 @@ void check_params(const InterpolationParams& p) {
   if (!(p.min_triangle_aspect >= 0 && p.min_triangle_aspect <= 1))
     throw Error::usage("min_triangle_aspect must be within [0, 1], not " +
                        std::to_string(p.min_triangle_aspect));
-}
-
-/// Barycentric coordinates of `p` projected onto the plane of triangle (a, b, c), clamped
-/// to the triangle (negative ones set to 0, the rest renormalised).
-std::array<double, 3> clamped_barycentric(const Vec3& p, const Vec3& a, const Vec3& b,
-                                          const Vec3& c) {
-  Vec3 v0 = b - a, v1 = c - a, v2 = p - a;
-  double d00 = v0.dot(v0), d01 = v0.dot(v1), d11 = v1.dot(v1);
-  double d20 = v2.dot(v0), d21 = v2.dot(v1);
-  double denominator = d00 * d11 - d01 * d01;
-  double v = (d11 * d20 - d01 * d21) / denominator;
-  double w = (d00 * d21 - d01 * d20) / denominator;
-  std::array<double, 3> weights = {std::max(0.0, 1 - v - w), std::max(0.0, v), std::max(0.0, w)};
-  double sum = weights[0] + weights[1] + weights[2];
-  for (double& weight : weights) weight /= sum;
-  return weights;
 }
 
 /// Smallest height of triangle (a, b, c) over its longest edge.
