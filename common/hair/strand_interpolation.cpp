@@ -205,6 +205,23 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     const int64_t anchor = held > 0 ? held - 1 : 0;
     const Vec3 anchor_m = point_of(strands.points, begin + anchor);
     const int32_t cluster = point_cluster[static_cast<size_t>(begin + held)];
+    // Arc parameter from the anchor to the tip.
+    std::vector<double> arc(static_cast<size_t>(size - anchor), 0.0);
+    for (int64_t i = anchor + 1; i < size; ++i)
+      arc[static_cast<size_t>(i - anchor)] =
+          arc[static_cast<size_t>(i - anchor - 1)] +
+          (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+    const double length = arc.back();
+    // Mean distance at rest from the strand's moving points to guide g at the same arc
+    // parameter: the size of the offsets g would have to carry.
+    auto mean_offset_m = [&](int32_t g) {
+      double sum = 0;
+      for (int64_t i = held; i < bound_from; ++i) {
+        double u = length > 0 ? arc[static_cast<size_t>(i - anchor)] / length : 0.0;
+        sum += (point_of(strands.points, begin + i) - guide_rest_point(guides, g, u)).norm();
+      }
+      return sum / static_cast<double>(std::max<int64_t>(1, bound_from - held));
+    };
     std::vector<int32_t> nearest =
         index.nearest(anchor_m.cast<float>(),
                       std::min<int>(params.candidate_guides, static_cast<int>(usable.size())));
@@ -233,14 +250,19 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
       }
     }
     if (!barycentric) {
-      // Clump: the nearest guide of the cluster (among the candidates, else all guides),
-      // else the nearest guide.
+      // Clump: of the candidates in the strand's cluster, the guide whose rest shape lies
+      // closest to the strand's (the least mean offset: the nearest root alone can be a
+      // short guide that a long strand would swing around); else the nearest guide of the
+      // cluster; else the nearest guide.
       int32_t best = -1;
+      double best_offset = std::numeric_limits<double>::infinity();
       for (int32_t candidate : nearest) {
-        if (guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(candidate)])] ==
-            cluster) {
+        int32_t g = usable[static_cast<size_t>(candidate)];
+        if (guides.cluster[static_cast<size_t>(g)] != cluster) continue;
+        double offset = mean_offset_m(g);
+        if (offset < best_offset) {
+          best_offset = offset;
           best = candidate;
-          break;
         }
       }
       if (best < 0) {
@@ -268,14 +290,7 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     float sum = binding.weights[si][0] + binding.weights[si][1] + binding.weights[si][2];
     for (float& weight : binding.weights[si]) weight /= sum;
 
-    // Arc parameter from the anchor to the tip, and the rest offsets from the weighted
-    // guides at that parameter.
-    std::vector<double> arc(static_cast<size_t>(size - anchor), 0.0);
-    for (int64_t i = anchor + 1; i < size; ++i)
-      arc[static_cast<size_t>(i - anchor)] =
-          arc[static_cast<size_t>(i - anchor - 1)] +
-          (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
-    const double length = arc.back();
+    // The rest offsets from the weighted guides at each point's arc parameter.
     for (int64_t i = held; i < bound_from; ++i) {
       double u = length > 0 ? arc[static_cast<size_t>(i - anchor)] / length : 0.0;
       auto uf = static_cast<float>(u);

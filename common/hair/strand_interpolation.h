@@ -103,11 +103,12 @@ struct StrandBinding {
 /// the strand's anchor (its last held point, or its root) and its cluster (that of its
 /// first interpolated point): the three nearest guides if they are of that cluster and
 /// point in similar directions (barycentric weights of the anchor projected onto their
-/// triangle, clamped to it), else the nearest guide of the cluster (clump), else the
-/// nearest guide. A strand with points to interpolate and no guide at all is held. A strand
-/// bound to a wisp follows no guide: its points between its held ones (or its root) and its
-/// first bound point are bridged, blended by arc length from moving with the head to
-/// moving with that point's tetrahedron (method braided).
+/// triangle, clamped to it), else, of those candidates in the cluster, the guide whose
+/// rest shape lies closest to the strand's (least mean distance at equal arc parameter;
+/// clump), else the nearest guide of the cluster, else the nearest guide. A strand with points to
+/// interpolate and no guide at all is held. A strand bound to a wisp follows no guide: its points
+/// between its held ones (or its root) and its first bound point are bridged, blended by arc length
+/// from moving with the head to moving with that point's tetrahedron (method braided).
 /// Deterministic. Throws Error::usage for parameters out of range and Error::runtime for
 /// guides or bindings that do not fit the strands.
 StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,

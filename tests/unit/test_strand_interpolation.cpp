@@ -196,6 +196,31 @@ TEST(StrandInterpolation, GuidesInOtherDirectionsGiveClumps) {
     EXPECT_EQ(binding.method[static_cast<size_t>(s)], InterpolationMethod::barycentric);
 }
 
+TEST(StrandInterpolation, AClumpFollowsTheGuideShapedLikeItNotTheNearestRoot) {
+  Scene scene = make_scene();
+  // A second guide of the side cluster, its anchor nearer the side strand's root (7 mm
+  // against 14 mm) but running sideways along +X: a long strand hung on it would swing
+  // around it. The side strand hangs down -Y like guide 9.
+  InterpolationGuides& g = scene.guides;
+  const Eigen::Index first = g.rest_points.rows();
+  g.rest_points.conservativeResize(first + kGuideParticles, 3);
+  for (int k = 0; k < kGuideParticles; ++k)
+    g.rest_points.row(first + k) =
+        Vec3(0.205 + kLength * k / (kGuideParticles - 1), 0, 0.005).cast<float>().transpose();
+  g.offsets.push_back(first + kGuideParticles);
+  g.cluster.push_back(kSide);
+  g.is_wisp_centre.push_back(0);
+  g.strand.push_back(-1);
+  StrandBinding binding = bind_strands(scene.strands, g, {});
+  constexpr size_t kSideStrand = 12;
+  EXPECT_EQ(binding.method[kSideStrand], InterpolationMethod::clump);
+  EXPECT_EQ(binding.guides[kSideStrand][0], 9);  // the downward guide, not the nearer one
+  // With the sideways guide alone in its cluster, the strand has to take it.
+  g.cluster[9] = kGrid;
+  binding = bind_strands(scene.strands, g, {});
+  EXPECT_EQ(binding.guides[kSideStrand][0], 10);
+}
+
 TEST(StrandInterpolation, AtRestReproducesTheGrownStrands) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
