@@ -120,12 +120,18 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   const auto& point_cluster =
       std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
 
+  // The style each cluster is simulated by: its own, or normal with the style rules off.
+  result.simulated_style = scene.cluster_style;
+  if (!params.by_style)
+    for (int8_t& style : result.simulated_style)
+      if (style >= 0) style = static_cast<int8_t>(HairStyle::normal);
+
   // The body's signed distance field over the hair to simulate at rest (with a margin
   // for its swing), built only when there is some.
   Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (int64_t row = 0; row < strands.point_count(); ++row) {
     int8_t style =
-        scene.cluster_style[static_cast<size_t>(point_cluster[static_cast<size_t>(row)])];
+        result.simulated_style[static_cast<size_t>(point_cluster[static_cast<size_t>(row)])];
     if (style < 0 || style == static_cast<int8_t>(HairStyle::fixed)) continue;
     low = low.cwiseMin(point_of(strands.points, row));
     high = high.cwiseMax(point_of(strands.points, row));
@@ -140,7 +146,6 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
 
   // The plan, and each braided cluster's centre strand; a braided cluster whose centre
   // strand cannot be had is simulated as normal hair.
-  result.simulated_style = scene.cluster_style;
   result.plan = plan_guides(strands, result.simulated_style, params.guide_count);
   std::map<int32_t, std::vector<Vec3>> centres;
   std::vector<GuideStrand> loose;  // braided clusters' strands outside their bundles

@@ -48,6 +48,9 @@ struct SimulationParams {
   /// (H per second) for settle_frames frames in a row; later frames repeat the last.
   double settle_speed_h_s = 0.05;
   int settle_frames = 10;
+  /// false: every cluster is simulated as normal hair, with guides over all of it (the
+  /// style rules off: no fixed hair, no short-hair segments, no wisps; benchmarks).
+  bool by_style = true;
 };
 
 /// What simulate_hair() needs: the grown strands (with the "cluster" point attribute), the

@@ -71,6 +71,9 @@ void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
              ParamRange::closed(0, 100));
   params.add("settle_frames", p.settle_frames, "... for this many frames in a row",
              ParamRange::closed(1, 100000));
+  params.add("by_style", p.by_style,
+             "simulate each cluster by its style (--by_style=false: all as normal hair, the "
+             "style rules off; for benchmarks)");
 }
 
 }  // namespace hair

@@ -293,5 +293,24 @@ TEST(HairSimulation, FixedHairIsNotSimulated) {
   EXPECT_EQ(result.frame_count, 31);  // the head's frames are still written
 }
 
+TEST(HairSimulation, WithTheStyleRulesOffEveryClusterIsNormalHair) {
+  SimulationScene scene = make_scene();
+  SimulationParams params = test_params();
+  params.by_style = false;
+  params.guide_count = static_cast<int>(scene.strands.strand_count());
+  SimulationResult result = simulate_hair(scene, HeadMotion::preset("nod", kPivot), params);
+  for (int8_t style : result.simulated_style)
+    EXPECT_EQ(style, static_cast<int8_t>(HairStyle::normal));
+  EXPECT_EQ(result.fixed_strands, 0);
+  EXPECT_TRUE(result.plan.wisps.empty());
+  EXPECT_EQ(static_cast<int64_t>(result.guides.size()), scene.strands.strand_count());
+  for (const SimulatedGuide& guide : result.guides) EXPECT_EQ(guide.style, HairStyle::normal);
+  // By style, the same scene has fixed hair and a wisp.
+  params.by_style = true;
+  SimulationResult by_style = simulate_hair(scene, HeadMotion::preset("nod", kPivot), params);
+  EXPECT_GT(by_style.fixed_strands, 0);
+  EXPECT_EQ(by_style.plan.wisps.size(), 1u);
+}
+
 }  // namespace
 }  // namespace hair
