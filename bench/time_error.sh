@@ -1,18 +1,22 @@
 #!/usr/bin/env bash
-# Run time against error (issue 9): for each model, a reference in which every grown strand
-# is a guide simulated as normal hair (the style rules off) at a small time step, and
-# variants of the defaults: guide counts, substeps, the fast setting, the style rules off,
-# and clump-only interpolation. Each variant is simulated and interpolated to every strand
-# of every frame; its error is the distance of each strand point to the same point of the
-# reference, divided by its strand's length, over all frames (mean and 95th percentile).
-# Its time is the simulate stage's own ms per integrated frame (guides.h5
-# guide_ms_per_frame) plus the interpolate stage's (frames.h5 interpolation_ms_per_frame),
-# each the median of RUNS runs on THREADS threads.
+# Run time against error (issue 9): for each model two references, in which every grown
+# strand is a guide simulated at a small time step (REF_SUBSTEPS per frame): the full
+# reference, everything as normal hair (the style rules off), and the by-style reference
+# (the style rules on). Against them, variants of the defaults: guide counts, substeps, the
+# fast setting, the style rules off, and clump-only interpolation. Each is simulated and
+# interpolated to every strand of every frame; its error is the distance of each strand
+# point to the same point of a reference, divided by its strand's length, over all frames
+# (mean and 95th percentile). The full reference measures all that the defaults leave out;
+# the by-style one isolates the guides, the time step and the interpolation. The time is
+# the simulate stage's own ms per integrated frame (guides.h5 guide_ms_per_frame) plus the
+# interpolate stage's (frames.h5 interpolation_ms_per_frame), each the median of RUNS runs
+# on THREADS threads.
 #
 #   bench/time_error.sh [MAKEHUMAN_DIR]
 #
-# Writes OUT/time_error.md (Markdown tables), OUT/time_error.csv and OUT/time_error.png
-# (the time-error front per model, the defaults marked). Environment: BIN (default
+# Writes OUT/time_error.md (Markdown tables), OUT/time_error.csv, OUT/time_error.png and
+# OUT/time_error_by_style.png (the time-error front per model against each reference, the
+# defaults marked). Environment: BIN (default
 # build/bin), OUT (default docs/bench), MODELS (MakeHuman models, default "braid01
 # ponytail01 long01"), SYNTH (hair-synth presets, default "braid"; seed 1), STRANDS (grown
 # strands per model, default 2000; the reference simulates all of them), REF_SUBSTEPS
@@ -53,13 +57,13 @@ variants=(
   "guides all|--guide_count 1000000|"
   "substeps 1|--substeps 1|"
   "substeps 4|--substeps 4|"
-  "fast (1 step, 0.2 H)|--substeps 1 --segment_length_h 0.2|"
+  "fast: 1 step + 0.2 H|--substeps 1 --segment_length_h 0.2|"
   "style rules off|--by_style=false|"
-  "clump only|--min_triangle_aspect 1|"
+  "clump only||--min_triangle_aspect 1"
 )
 
 csv=$work/time_error.csv
-echo "model,variant,guides,simulate_ms,interpolate_ms,mean_error,p95_error,max_error" >"$csv"
+echo "model,variant,guides,simulate_ms,interpolate_ms,mean_error,p95_error,max_error,mean_error_by_style,p95_error_by_style,max_error_by_style" >"$csv"
 
 # run_variant DIR LABEL SIM_OPTIONS INTERP_OPTIONS: simulate and interpolate DIR's model
 # RUNS times; the medians of the two stages' own timings, and the frames into DIR/LABEL.h5.
@@ -70,12 +74,15 @@ run_variant() {
   for ((run = 0; run < runs; ++run)); do
     # shellcheck disable=SC2086  # the options are words
     "$bin/simulate" "$dir/extract.h5" "$dir/strands.h5" "$dir/styles.h5" --params "$params/simulate.toml" \
-      --motion "$motion" --duration_s "$duration_s" --threads "$threads" --quiet $sim_options -o "$dir/guides.h5"
+      --motion "$motion" --duration_s "$duration_s" --threads "$threads" --quiet $sim_options -o "$dir/guides.h5" 2>>"$dir/simulate.log"
     sims+=("$(attribute "$dir/guides.h5" guide_ms_per_frame)")
+    # The first run writes every frame (for the error), the others time a few.
+    local frames=() target=$dir/frames_$name.h5
+    ((run == 0)) || { frames=(--frames 0:6); target=$dir/timing.h5; }
     # shellcheck disable=SC2086
     "$bin/interpolate" "$dir/guides.h5" "$dir/strands.h5" "$dir/styles.h5" --params "$params/interpolate.toml" \
-      --threads "$threads" --quiet $interp_options -o "$dir/frames_$name.h5"
-    interps+=("$(attribute "$dir/frames_$name.h5" interpolation_ms_per_frame)")
+      --threads "$threads" --quiet $interp_options "${frames[@]}" -o "$target"
+    interps+=("$(attribute "$target" interpolation_ms_per_frame)")
   done
   guides_of[$label]=$(h5ls "$dir/guides.h5/guides/strand" | sed 's/.*{\([0-9]*\).*/\1/')
   sim_ms[$label]=$(printf '%s\n' "${sims[@]}" | median)
@@ -108,28 +115,31 @@ for input in "${inputs[@]}"; do
   declare -A guides_of=() sim_ms=() interp_ms=()
   runs_kept=$runs
   runs=1  # the reference is slow and only its frames are needed
-  run_variant "$dir" reference "--by_style=false --guide_count 1000000 --substeps $ref_substeps" ""
+  run_variant "$dir" "full reference" "--by_style=false --guide_count 1000000 --substeps $ref_substeps" ""
+  run_variant "$dir" "by-style reference" "--guide_count 1000000 --substeps $ref_substeps" ""
   runs=$runs_kept
   for variant in "${variants[@]}"; do
     IFS='|' read -r label sim_options interp_options <<<"$variant"
     run_variant "$dir" "$label" "$sim_options" "$interp_options"
   done
-  for variant in reference "${variants[@]}"; do
+  for variant in "full reference" "by-style reference" "${variants[@]}"; do
     label=${variant%%|*}
-    errors=$(/usr/bin/python3 bench/time_error_measure.py "$dir/frames_reference.h5" "$dir/frames_${label// /_}.h5")
-    echo "$name,$label,${guides_of[$label]},${sim_ms[$label]},${interp_ms[$label]},$errors" >>"$csv"
+    frames=$dir/frames_${label// /_}.h5
+    full=$(/usr/bin/python3 bench/time_error_measure.py "$dir/frames_full_reference.h5" "$frames")
+    by_style=$(/usr/bin/python3 bench/time_error_measure.py "$dir/frames_by-style_reference.h5" "$frames")
+    echo "$name,$label,${guides_of[$label]},${sim_ms[$label]},${interp_ms[$label]},$full,$by_style" >>"$csv"
   done
   rm -f "$dir"/frames_*.h5
 done
 
 cp "$csv" "$out/time_error.csv"
 /usr/bin/python3 bench/time_error_report.py "$out/time_error.csv" "$out/time_error.png" \
-  --title "$motion, ${duration_s} s at 30 fps; $strand_count strands; reference: every strand a guide, style rules off, $ref_substeps substeps" \
+  --title "$motion, ${duration_s} s at 30 fps; $strand_count strands; references at $ref_substeps substeps" \
   >"$out/time_error.md.body"
 {
   echo "# Run time against error"
   echo
-  echo "\`bench/time_error.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $threads threads; medians of $runs runs; motion $motion for $duration_s s at 30 fps; $strand_count grown strands per model; reference: every strand a guide, simulated as normal hair, $ref_substeps substeps per frame."
+  echo "\`bench/time_error.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $threads threads; medians of $runs runs; motion $motion for $duration_s s at 30 fps; $strand_count grown strands per model; references: every strand a guide, $ref_substeps substeps per frame, the style rules off (full) or on (by style)."
   echo
   cat "$out/time_error.md.body"
 } >"$out/time_error.md"
