@@ -33,6 +33,11 @@ void for_each_block(const File& file, const std::string& path, const BlockVisito
   if (row_elements == 0) return;
   const int64_t rows_per_block = std::max<int64_t>(1, block_elements / row_elements);
   const hid_t memory = memory_type(dtype_of<T>());
+  // float32 read as double: read as float and widen here, which is several times faster
+  // than HDF5's type conversion (a frame of a million points: 25 ms against 200 ms).
+  const bool widen_float = std::is_same_v<T, double> && type_class == H5T_FLOAT &&
+                           H5Tget_size(type.get()) == sizeof(float);
+  std::vector<float> narrow;
   std::vector<T> values;
   for (int64_t first_row = 0; first_row < shape[0]; first_row += rows_per_block) {
     const int64_t rows = std::min(rows_per_block, shape[0] - first_row);
@@ -45,12 +50,19 @@ void for_each_block(const File& file, const std::string& path, const BlockVisito
       H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(),
                           nullptr);
     }
-    const Handle memory_space(H5Screate_simple(1, &block_size, nullptr), H5Sclose);
+    // The memory space has the selection's shape: against a flat one HDF5 maps value by
+    // value (H5S_select_iterate), several times slower than a copy.
+    const Handle memory_space(rank > 0 ? H5Screate_simple(rank, count.data(), nullptr)
+                                       : H5Screate_simple(1, &block_size, nullptr),
+                              H5Sclose);
     values.resize(block_size);
-    if (H5Dread(dataset.get(), memory, memory_space.get(), file_space.get(), H5P_DEFAULT,
-                values.data()) < 0) {
+    if (widen_float) narrow.resize(block_size);
+    if (H5Dread(dataset.get(), widen_float ? H5T_NATIVE_FLOAT : memory, memory_space.get(),
+                file_space.get(), H5P_DEFAULT,
+                widen_float ? static_cast<void*>(narrow.data()) : values.data()) < 0) {
       throw Error::bad_dataset(file.name(), path, with_hdf5_message("cannot read dataset"));
     }
+    if (widen_float) std::copy(narrow.begin(), narrow.end(), values.begin());
     if (!visit(first_row * row_elements, std::span<const T>(values))) return;
   }
 }

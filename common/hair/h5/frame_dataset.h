@@ -15,8 +15,15 @@ namespace hair::h5 {
 /// about as well at 1 and a frame of a million points deflates several times faster.
 inline constexpr unsigned kFrameDeflateLevel = 1;
 
+/// Bytes of a frame's chunk deflated by one thread: a frame's chunk is deflated in pieces
+/// of this size on all OpenMP threads and the pieces joined into one zlib stream (as pigz
+/// does: each piece ends on a byte boundary, the checksums are combined).
+inline constexpr size_t kFrameDeflatePieceBytes = size_t{1} << 20;
+
 /// Creates `path` (float32, [frames, rows, columns], chunk [1, rows, columns], shuffle and
-/// deflate at kFrameDeflateLevel) and writes it frame by frame.
+/// deflate at kFrameDeflateLevel) and writes it frame by frame. The writer shuffles and
+/// deflates each frame itself, in parallel, and hands HDF5 the compressed chunk
+/// (H5Dwrite_chunk): a chunk HDF5's own filters read back, without their one thread.
 class FrameDatasetWriter {
  public:
   FrameDatasetWriter(File& file, const std::string& path, int64_t frames, int64_t rows,
