@@ -23,6 +23,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 makehuman=${MAKEHUMAN:-../shared/data/makehuman}
 out=${OUT:-docs/bench}
 export OUT=$out
+export PYTHON=${PYTHON:-/usr/bin/python3}  # bench/cluster_compare.sh: numpy, scipy, h5py, scikit-learn
 parts=("$@")
 ((${#parts[@]})) || parts=(time_error stability pipeline skips blender clustering)
 
