@@ -6,7 +6,7 @@
 # THREADS, median of RUNS) for our default 169 guides and for --guide_count 1000, without
 # and with body collisions (--body_collisions, on by default); Blender's
 # ms per frame (median over the frames, median of RUNS) with THREADS threads (-t and
-# OMP_NUM_THREADS, OMP_WAIT_POLICY=PASSIVE, see docs/measured/blender_peer.md) on (a) our
+# OMP_NUM_THREADS) on (a) our
 # guides' rest shapes, each resampled to KEYS keys, and (b) 1,000 grown strands of
 # strands.h5 (every len/1000-th) resampled to KEYS keys, each without and with the body as
 # a collision object. Blender's own check (hairs have the guide shapes at frame 1, roots
@@ -39,6 +39,11 @@ model_file=${MODEL:-models/style_extended.yml}
 work=$(mktemp -d "${TMPDIR:-/tmp}/blender_peer.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
+# Both simulators use OpenMP. libgomp's default spin-waiting made Blender's solver (an
+# "omp parallel sections" per matrix product) take up to 3 s for some frames of 31 hairs
+# when other jobs share the cores, and it slows ours too: both run with passive waiting.
+export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-PASSIVE}
+
 source bench/common.sh
 copy_binaries blender_peer "$work" extract typeify cluster-middle cluster-all grow classify simulate
 bin=$work/bin
@@ -59,7 +64,7 @@ theirs() {
   local input=$1 run
   shift
   for ((run = 0; run < runs; ++run)); do
-    OMP_NUM_THREADS=$threads OMP_WAIT_POLICY=PASSIVE "$blender" -b --factory-startup -noaudio -t "$threads" \
+    OMP_NUM_THREADS=$threads "$blender" -b --factory-startup -noaudio -t "$threads" \
       --python-exit-code 1 -P bench/blender_hair_dynamics.py -- --input "$input" --keys "$keys" --frames "$frames" \
       --output "$work/result.json" "$@" >"$work/blender.log" 2>&1 || { cat "$work/blender.log" >&2; exit 1; }
     $py -c 'import json,sys; print(json.load(open(sys.argv[1]))["median_ms_per_frame"])' "$work/result.json"
@@ -69,7 +74,7 @@ inside = "" if c["last_frame_share_inside_body"] is None else ", %.1f%% inside b
 print(" (%s: keys %.1g m off, tips moved %.0f mm%s)" % ("ok" if c["passed"] else "CHECK FAILED", c["frame1_max_key_error_m"], 1e3 * c["last_frame_tip_offset_m_median"], inside))' "$work/result.json"
 }
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load average $(cut -d' ' -f1-3 /proc/loadavg); $("$blender" --version 2>/dev/null | head -n 1); $threads threads; median of $runs runs; $keys keys per Blender hair; motion shake; parameters $params."
+echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load average $(cut -d' ' -f1-3 /proc/loadavg); OMP_WAIT_POLICY=$OMP_WAIT_POLICY; $("$blender" --version 2>/dev/null | head -n 1); $threads threads; median of $runs runs; $keys keys per Blender hair; motion shake; parameters $params."
 echo
 echo "| model | strands | our points per guide (mean) | ours ms/frame, no collisions | ours ms/frame, body collisions | Blender ms/frame, no collisions | Blender ms/frame, body collisions |"
 echo "|---|---|---:|---:|---:|---:|---:|"
