@@ -15,10 +15,11 @@ simulate stage; with --body, the body mesh as a collision object parented to the
 The emitter is keyed with the head transform per frame (x = R x_rest + t), Blender frame
 f + 1 = input frame f (looped when --frames exceeds the input's frames). Frames are
 stepped in order with scene.frame_set; each is timed with time.perf_counter, except frame
-1 (the rest state, where the cache starts). The check: at frame 1 the evaluated hairs
-(ParticleSystem.co_hair, the path Blender draws) must lie on the resampled rest shapes
-(head at rest) and by the last frame the tips must have moved relative to the head
-(dynamics ran, not a rigid copy). Prints and writes the result as JSON.
+1 (the rest state, where the cache starts). The check: at frame 1 the hair keys must be
+the resampled rest shapes; where the head is turned furthest and at the last frame the
+roots (ParticleSystem.co_hair, the path Blender draws) must follow the head; and by the
+last frame the tips must have moved relative to the head (dynamics ran, not a rigid
+copy). Prints and writes the result as JSON.
 """
 import argparse
 import json
@@ -206,27 +207,37 @@ def main():
     inside_first = inside_share(body, first) if body else None
     key_err = max((Vector(key.co_object(obj_eval, mod_eval, p)) - co).length
                   for p, h in zip(psys_eval.particles, hairs) for key, co in zip(p.hair_keys, h))
+    # The input frame where the head is turned furthest from rest (read after its timing).
+    src_of = [f if f <= n_in else 1 + (f - 1) % n_in for f in range(frames + 1)]
+    turned = max(range(1, frames + 1), key=lambda f: abs(Quaternion(rot[src_of[f]]).angle))
     for f in range(2, frames + 2):
         t0 = time.perf_counter()
         scene.frame_set(f)
         times.append((time.perf_counter() - t0) * 1e3)
+        if f == turned + 1:
+            dg = bpy.context.evaluated_depsgraph_get()
+            oe = obj.evaluated_get(dg)
+            mid = world_hairs(oe, oe.modifiers[mod.name].particle_system, k_path)
     dg = bpy.context.evaluated_depsgraph_get()
     last = world_hairs(obj.evaluated_get(dg), obj.evaluated_get(dg).modifiers[mod.name].particle_system, k_path)
     inside_last = inside_share(body, last) if body else None
 
     # Check: at frame 1 the hair keys are the rest shapes (the drawn path, a spline through
     # the keys, is only reported: it leaves the key polyline on curly hair); at the last
-    # frame the roots follow the head and the tips moved off the rigidly carried rest shape.
+    # frame and where the head is turned furthest the roots follow the head, and at the last
+    # frame the tips moved off the rigidly carried rest shape.
     shape_err = 0.0
     for h, path in zip(hairs, first):
         for s, co in enumerate(path):
             u = s * (k - 1) / k_path
             j = min(int(u), k - 2)
             shape_err = max(shape_err, (Vector(co) - h[j].lerp(h[j + 1], u - j)).length)
-    src = frames if frames <= n_in else 1 + (frames - 1) % n_in
-    m = Matrix.Translation(Vector(tr[src])) @ Quaternion(rot[src]).to_matrix().to_4x4()
+    def head(f):
+        return Matrix.Translation(Vector(tr[src_of[f]])) @ Quaternion(rot[src_of[f]]).to_matrix().to_4x4()
+    m = head(frames)
     tip_moves = sorted((Vector(path[-1]) - m @ h[-1]).length for h, path in zip(hairs, last))
-    root_err = max((Vector(path[0]) - m @ h[0]).length for h, path in zip(hairs, last))
+    root_err = max((Vector(path[0]) - head(f) @ h[0]).length
+                   for f, paths in ((frames, last), (turned, mid)) for h, path in zip(hairs, paths))
     lengths = [sum((b - a_).length for a_, b in zip(h, h[1:])) for h in hairs]
     ok = key_err < 1e-4 and root_err < 0.001 and statistics.median(tip_moves) > 0.002
     result = {
@@ -235,7 +246,8 @@ def main():
         "source": data.get("source"), "body_collision": bool(a.body), "settings": {**SETTINGS, "quality": a.quality},
         "median_ms_per_frame": statistics.median(times), "mean_ms_per_frame": statistics.fmean(times),
         "init_frame_ms": init_ms, "first_step_ms": times[0], "ms_per_frame": [round(t, 2) for t in times],
-        "check": {"passed": ok, "frame1_max_key_error_m": key_err, "frame1_max_path_off_polyline_m": shape_err, "last_frame_max_root_error_m": root_err,
+        "check": {"passed": ok, "frame1_max_key_error_m": key_err, "frame1_max_path_off_polyline_m": shape_err, "max_root_error_m": root_err, "turned_frame": turned,
+                  "turned_angle_deg": math.degrees(abs(Quaternion(rot[src_of[turned]]).angle)),
                   "last_frame_tip_offset_m_median": statistics.median(tip_moves),
                   "last_frame_tip_offset_m_max": tip_moves[-1], "median_hair_length_m": statistics.median(lengths),
                   "frame1_share_inside_body": inside_first, "last_frame_share_inside_body": inside_last},
@@ -245,7 +257,7 @@ def main():
     if a.output:
         json.dump(result, open(a.output, "w"), indent=1)
     if a.export:
-        json.dump({"frame1": first, "last": last, "rest_keys": [[tuple(v) for v in h] for h in hairs]}, open(a.export, "w"))
+        json.dump({"frame1": first, "turned_frame": turned, "turned": mid, "last_frame": frames, "last": last, "rest_keys": [[tuple(v) for v in h] for h in hairs]}, open(a.export, "w"))
 
 
 main()
