@@ -32,7 +32,8 @@ import bpy
 from mathutils import Matrix, Quaternion, Vector
 from mathutils.bvhtree import BVHTree
 
-# Hair dynamics settings (ClothSettings of the hair system), documented defaults or ours:
+# Hair dynamics settings (ClothSettings of the hair system): Blender 3.4's defaults, set
+# explicitly so that the run does not depend on them.
 SETTINGS = {
     "quality": 5,                # solver steps per frame (Blender's default 5; ours: 2 substeps)
     "mass": 0.3,                 # Blender's default vertex mass (kg); the look depends on ratios
@@ -40,7 +41,7 @@ SETTINGS = {
     "tension_stiffness": 15.0,   # Blender's default (the UI's "stiffness" of hair structure)
     "air_damping": 1.0,          # Blender's default
     "internal_friction": 0.0,    # hair-hair friction through the volume grid: off
-    "pin_stiffness": 1.0,        # root goal (Blender's default)
+    "pin_stiffness": 0.0,        # pull of the keys to their rest shape (0: off; roots are pinned regardless)
 }
 # With --body: hair kept this far off it (collision distance_min and the body's outer
 # thickness; Blender's defaults 0.015 and 0.02 m are for scenes in larger units), as our
@@ -57,7 +58,7 @@ def parse():
     ap.add_argument("--body", help="body OBJ (metres, Y up) as a collision object")
     ap.add_argument("--quality", type=int, default=SETTINGS["quality"])
     ap.add_argument("--output", help="write the result JSON here too")
-    ap.add_argument("--export", help="write the hairs at frame 1 and the last frame here")
+    ap.add_argument("--export", help="write the hairs (world space) at frame 1, where the head is turned furthest and the last frame here")
     return ap.parse_args(argv)
 
 
