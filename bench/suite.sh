@@ -59,7 +59,9 @@ for name in "${parts[@]}"; do
     stability) part stability stability.md bash bench/stability.sh "$makehuman" ;;
     pipeline) part pipeline - bash bench/pipeline_scaling.sh "$makehuman" ;;
     skips) part skips skips.md bash bench/skips.sh "$makehuman" ;;
-    blender) part blender blender_peer.md bash bench/blender_peer.sh "$makehuman" ;;
+    # One run of 30 frames per case (the script's own defaults, 3 runs of every frame,
+    # take about 18 minutes): BLENDER_RUNS, BLENDER_FRAMES.
+    blender) part blender blender_peer.md env RUNS="${BLENDER_RUNS:-1}" FRAMES="${BLENDER_FRAMES:-30}" bash bench/blender_peer.sh "$makehuman" ;;
     clustering) part clustering cluster_compare.md bash bench/cluster_compare.sh "$makehuman" ;;
     *) echo "suite: unknown part $name (time_error stability pipeline skips blender clustering)" >&2; exit 2 ;;
   esac
