@@ -112,6 +112,7 @@ Vec3 head_pivot(const Points3f& body_vertices, double head_height_m) {
 SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& motion,
                                const SimulationParams& params) {
   check_params(params);
+  check_strand_set(scene.strands, 1);  // names a strand with a non-finite point
   auto setup_start = std::chrono::steady_clock::now();
   const double h = scene.head_height_m;
   const StrandSet& strands = scene.strands;
