@@ -111,12 +111,16 @@ void limit_ghosts(const AltitudeStrand& strand, const StrandMaterial& material,
     // A ghost always lies between two hair particles.
     const Vec3& a = x[k - 1];
     const Vec3& b = x[k + 1];
-    const double rest_a = (strand.rest_m[k] - strand.rest_m[k - 1]).norm();
-    const double rest_b = (strand.rest_m[k + 1] - strand.rest_m[k]).norm();
-    const double length_a = (x[k] - a).norm(), length_b = (b - x[k]).norm();
-    const double target_a = std::clamp(length_a, low * rest_a, high * rest_a);
-    const double target_b = std::clamp(length_b, low * rest_b, high * rest_b);
-    if (target_a == length_a && target_b == length_b) continue;
+    // Squared lengths first: most ghosts are within bounds, and cost no square root.
+    const double rest_a2 = (strand.rest_m[k] - strand.rest_m[k - 1]).squaredNorm();
+    const double rest_b2 = (strand.rest_m[k + 1] - strand.rest_m[k]).squaredNorm();
+    const double length_a2 = (x[k] - a).squaredNorm(), length_b2 = (b - x[k]).squaredNorm();
+    if (length_a2 >= low * low * rest_a2 && length_a2 <= high * high * rest_a2 &&
+        length_b2 >= low * low * rest_b2 && length_b2 <= high * high * rest_b2)
+      continue;
+    const double rest_a = std::sqrt(rest_a2), rest_b = std::sqrt(rest_b2);
+    const double target_a = std::clamp(std::sqrt(length_a2), low * rest_a, high * rest_a);
+    const double target_b = std::clamp(std::sqrt(length_b2), low * rest_b, high * rest_b);
     Vec3 axis = b - a;
     const double d = axis.norm();
     if (!(d > 1e-12)) continue;
