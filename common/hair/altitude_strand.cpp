@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "hair/barycentric.h"
 
@@ -129,6 +130,11 @@ AltitudeStrand build_altitude_strand(const std::vector<Vec3>& hair_points_m,
                                      const AltitudeStrandOptions& options) {
   if (hair_points_m.size() < 2)
     throw std::invalid_argument("an altitude strand needs at least two hair particles");
+  for (size_t i = 0; i < hair_points_m.size(); ++i) {
+    if (!hair_points_m[i].allFinite())
+      throw std::invalid_argument("an altitude strand's hair particle " + std::to_string(i) +
+                                  " is not finite");
+  }
   for (size_t i = 0; i + 1 < hair_points_m.size(); ++i) {
     if (!((hair_points_m[i + 1] - hair_points_m[i]).norm() > 1e-9))
       throw std::invalid_argument("an altitude strand has a zero-length segment");

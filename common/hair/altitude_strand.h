@@ -74,8 +74,8 @@ struct AltitudeStrand {
 ///
 /// Ghost placement: beside the middle of the segment it splits, at the angle about the
 /// segment (of twelve) that makes the worst of the two new tetrahedra best.
-/// Deterministic. Throws std::invalid_argument on fewer than two points or a zero-length
-/// segment (callers resample the strands first).
+/// Deterministic. Throws std::invalid_argument on fewer than two points, a non-finite one
+/// or a zero-length segment (callers resample the strands first).
 AltitudeStrand build_altitude_strand(const std::vector<Eigen::Vector3d>& hair_points_m,
                                      double mass_per_length_kg_m,
                                      const AltitudeStrandOptions& options = {});

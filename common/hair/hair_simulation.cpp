@@ -112,6 +112,7 @@ Vec3 head_pivot(const Points3f& body_vertices, double head_height_m) {
 SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& motion,
                                const SimulationParams& params) {
   check_params(params);
+  check_strand_set(scene.strands, 1);  // names a strand with a non-finite point
   auto setup_start = std::chrono::steady_clock::now();
   const double h = scene.head_height_m;
   const StrandSet& strands = scene.strands;
@@ -355,6 +356,8 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     for (const Vec3& p : strand.model.rest_m) strand.state.position_m.push_back(head.apply(p));
     strand.state.velocity_m_s.assign(strand.model.rest_m.size(), Vec3::Zero());
     strand.acceleration_m_s2.assign(strand.model.rest_m.size(), Vec3::Zero());
+    for (size_t a = 0; a < strand.anchors.size(); ++a)  // for frame 0's elastic energy
+      strand.anchors[a].position_m = head.apply(strand.anchor_rest_m[a]);
   }
   // The rest state's density, in the head's frame: repulsion pushes only where the hair
   // is denser than it was at rest, by more than the mean density of an occupied cell
@@ -574,6 +577,10 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       }
       previous = next;
     }
+    // The anchors where the frame's statistics measure their springs: at its end.
+    for (RunningStrand& strand : running)
+      for (size_t a = 0; a < strand.anchors.size(); ++a)
+        strand.anchors[a].position_m = pose.apply(strand.anchor_rest_m[a]);
     record_frame(frame, pose);
     FrameStatistics stats = frame_statistics(frame / params.fps, pose);
     result.statistics.push_back(stats);

@@ -142,8 +142,13 @@ struct SimulationResult {
 Eigen::Vector3d head_pivot(const Points3f& body_vertices, double head_height_m);
 
 /// Simulates `scene` under `motion`. Frame 0 is the rest state at time 0; frame f is at
-/// f / fps. Deterministic whatever the thread count. Throws hair::Error: runtime with the
-/// frame and guide where a position becomes non-finite; usage for parameters out of range.
+/// f / fps. Deterministic whatever the thread count. Guide strands are resampled to equal
+/// arcs, so repeated points in a grown strand are harmless; a guide strand with no length
+/// (a single point, or all its points at one place) is left out; a root inside the body
+/// is held where the head puts it, and the hair beyond it is pushed out as far as its
+/// length allows. Throws hair::Error: runtime naming the strand with a non-finite point,
+/// and the frame and guide where a position becomes non-finite; usage for parameters out
+/// of range.
 SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& motion,
                                const SimulationParams& params);
 

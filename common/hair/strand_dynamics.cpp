@@ -1,5 +1,6 @@
 #include "hair/strand_dynamics.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -92,6 +93,48 @@ void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& materia
     linear.stiffness = constants.stiffness_per_kg[kAltitudeConstants] * mass;
     linear.damping = constants.damping_per_kg[kAltitudeConstants] * mass;
     visit(linear);
+  }
+}
+
+/// Brings each free ghost's distances to its two hair neighbours (its edge springs)
+/// within `max_stretch` of their rest lengths, keeping its angle about their segment.
+/// The springs alone do not hold a ghost: linearised along their directions at the start
+/// of the step, they let it move across them unopposed, and under a fast head (a violent
+/// shake at the default step, any shake at a step of a tenth of a second) ghosts drift
+/// metres off their strand while its hair stays within the strain limit.
+void limit_ghosts(const AltitudeStrand& strand, const StrandMaterial& material,
+                  std::vector<Vec3>& x) {
+  const double low = 1 - material.max_stretch, high = 1 + material.max_stretch;
+  for (int32_t q = std::max(strand.kinematic_count, 1); q + 1 < strand.particle_count(); ++q) {
+    auto k = static_cast<size_t>(q);
+    if (!strand.is_ghost[k]) continue;
+    // A ghost always lies between two hair particles.
+    const Vec3& a = x[k - 1];
+    const Vec3& b = x[k + 1];
+    // Squared lengths first: most ghosts are within bounds, and cost no square root.
+    const double rest_a2 = (strand.rest_m[k] - strand.rest_m[k - 1]).squaredNorm();
+    const double rest_b2 = (strand.rest_m[k + 1] - strand.rest_m[k]).squaredNorm();
+    const double length_a2 = (x[k] - a).squaredNorm(), length_b2 = (b - x[k]).squaredNorm();
+    if (length_a2 >= low * low * rest_a2 && length_a2 <= high * high * rest_a2 &&
+        length_b2 >= low * low * rest_b2 && length_b2 <= high * high * rest_b2)
+      continue;
+    const double rest_a = std::sqrt(rest_a2), rest_b = std::sqrt(rest_b2);
+    const double target_a = std::clamp(std::sqrt(length_a2), low * rest_a, high * rest_a);
+    const double target_b = std::clamp(std::sqrt(length_b2), low * rest_b, high * rest_b);
+    Vec3 axis = b - a;
+    const double d = axis.norm();
+    if (!(d > 1e-12)) continue;
+    axis /= d;
+    // The circle of points at target_a from a and target_b from b: its plane's distance t
+    // from a along the axis and its radius.
+    const double t = (target_a * target_a - target_b * target_b + d * d) / (2 * d);
+    const double radius = std::sqrt(std::max(0.0, target_a * target_a - t * t));
+    Vec3 across = (x[k] - a) - (x[k] - a).dot(axis) * axis;
+    if (!(across.norm() > 1e-12 * d)) {  // on the axis: any direction across it
+      Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+      across = axis.cross(helper);
+    }
+    x[k] = a + t * axis + radius * across.normalized();
   }
 }
 
@@ -309,6 +352,7 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     move_segment(i, tip_side - before);
     shift += tip_side - before;
   }
+  limit_ghosts(strand, material, x);
   for (int32_t q = first_free; q < count; ++q) {
     auto k = static_cast<size_t>(q);
     v[k] = (x[k] - start[k]) / dt_s;
@@ -354,6 +398,7 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     move_segment(i, tip_side - before);
     shift += tip_side - before;
   }
+  limit_ghosts(strand, material, x);
   // A particle the body's moves held back (it, or the strand before it, touched) loses
   // the part of its velocity they opposed: it is stopped, not thrown back.
   for (int32_t q = first_free; q < count; ++q) {

@@ -1,8 +1,11 @@
 #pragma once
 // Time integration of one altitude mass-spring strand (Selle, Lentine and Fedkiw 2008):
 // backward Euler with every spring linearised along its direction at the start of the
-// step, which makes the step one banded SPD solve per strand (banded_cholesky.h) and stable
-// whatever the stiffness and the time step, then strain limiting of the hair segments.
+// step, which makes the step one banded SPD solve per strand (banded_cholesky.h), then
+// strain limiting of the hair segments and of the ghosts' edges. The solve is stable
+// whatever the stiffness and the time step as a linear system; the strain limiting keeps
+// what its linearisation misses (motion across the springs) bounded
+// (tests/unit/test_simulation_stress.cpp).
 
 #include <Eigen/Core>
 #include <vector>
@@ -76,16 +79,18 @@ class StrandStepper {
   /// direction (two-particle springs, the altitude of each tetrahedron with the most
   /// robust normal, the anchors) and c_s its damping. Then hair segments longer or
   /// shorter than max_stretch allows are brought back, from the root out, moving the
-  /// particle farther from the root and everything beyond it, and the velocities become
-  /// (x' - x) / dt. Then, with `collider`, each hair particle is pushed out of the body,
+  /// particle farther from the root and everything beyond it; each free ghost is brought
+  /// to within max_stretch of its rest distances from its two hair neighbours, keeping
+  /// its angle about their segment (the linearised springs alone let ghosts slide across
+  /// them, and under fast head motion drift far off the strand); and the velocities
+  /// become (x' - x) / dt. Then, with `collider`, each hair particle is pushed out of the body,
   /// alternating with its segment's length limit, and keeps its step's displacement along
   /// the surface (relative to the body) only beyond `friction` times the push, less that
   /// (Coulomb friction on positions, so hair lying on the body comes to rest); the rest
-  /// of the strand follows. These moves add no velocity: a particle they moved loses the
-  /// part of its velocity against the move, and one that touched the body the normal part
-  /// of its velocity relative to the surface.
-  /// Throws std::runtime_error if the band matrix is not positive definite (it always is
-  /// for positive masses and time step).
+  /// of the strand follows, and the ghosts are limited again. These moves add no velocity: a
+  /// particle they moved loses the part of its velocity against the move, and one that touched the
+  /// body the normal part of its velocity relative to the surface. Throws std::runtime_error if the
+  /// band matrix is not positive definite (it always is for positive masses and time step).
   void step(const AltitudeStrand& strand, const StrandMaterial& material,
             const std::vector<Eigen::Vector3d>& acceleration_m_s2,
             const Eigen::Vector3d& uniform_acceleration_m_s2,
