@@ -33,6 +33,8 @@ bin=$work/bin
 
 # attribute FILE NAME: a numeric root attribute of an HDF5 file.
 attribute() { h5dump -a "/$2" "$1" | sed -n 's/^ *(0): *//p' | head -n 1; }
+# saved WITH WITHOUT: the share of WITHOUT's time that WITH saves, as a percentage.
+saved() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.0f%%", 100 * (1 - a / b) }'; }
 # count FILE DATASET: the first extent of a dataset.
 count() { h5ls "$1$2" | sed 's/.*{\([0-9]*\).*/\1/'; }
 
@@ -68,8 +70,8 @@ echo "## The style rules: fixed clusters and braid wisps"
 echo
 echo "Simulate (the default motion, one cycle) and interpolate (frames $frames) by style, and with every cluster as normal hair (\`--by_style=false\`), at the default guide count."
 echo
-echo "| model | styles | strands fixed / in wisps | simulate ms, by style | simulate ms, all normal | interpolate ms, by style | interpolate ms, all normal | saved |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|"
+echo "| model | styles | strands fixed / in wisps | simulate ms, by style | simulate ms, all normal | simulate saved | interpolate ms, by style | interpolate ms, all normal | both saved |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"
 for model in ponytail01 braid01; do
   dir=$work/$model
   declare -A ms=()
@@ -85,21 +87,22 @@ for model in ponytail01 braid01; do
   braided=$(attribute "$dir/guides_true.h5" braided_strand_count)
   by=$((ms[simulate_true] + ms[interpolate_true]))
   off=$((ms[simulate_false] + ms[interpolate_false]))
-  echo "| $model | $styles | $fixed / $braided | ${ms[simulate_true]} | ${ms[simulate_false]} | ${ms[interpolate_true]} | ${ms[interpolate_false]} | $(awk -v a="$by" -v b="$off" 'BEGIN { printf "%.0f%%", 100 * (1 - a / b) }') |"
+  echo "| $model | $styles | $fixed / $braided | ${ms[simulate_true]} | ${ms[simulate_false]} | $(saved "${ms[simulate_true]}" "${ms[simulate_false]}") | ${ms[interpolate_true]} | ${ms[interpolate_false]} | $(saved "$by" "$off") |"
 done
 echo
 echo "## A still head: settling"
 echo
 echo "Simulate \`--motion still\` for $still_s s at 30 fps: the simulation stops once no particle moves faster than 0.05 H/s for 10 frames, against the same with settling off (\`--settle_speed_h_s 0\`)."
 echo
-echo "| model | frames integrated, settling | simulate ms, settling | simulate ms, no settling | saved |"
+echo "| model | settled at frame | simulate ms, settling | simulate ms, no settling | saved |"
 echo "|---|---:|---:|---:|---:|"
 for model in ponytail01 long01; do
   dir=$work/$model
   still=("$bin/simulate" "$dir/extract.h5" "$dir/strands.h5" "$dir/styles.h5" --params "$params/simulate.toml" --quiet --threads "$threads" --motion still --duration_s "$still_s")
   "${still[@]}" -o "$dir/still.h5"
   settled=$(attribute "$dir/still.h5" settled_at_frame)
+  ((settled >= 0)) || settled="none (never settled)"
   with=$(time_ms "${still[@]}" -o "$dir/still.h5")
   without=$(time_ms "${still[@]}" --settle_speed_h_s 0 -o "$dir/still_all.h5")
-  echo "| $model | $settled of $(count "$dir/still.h5" /frames/time_s) | $with | $without | $(awk -v a="$with" -v b="$without" 'BEGIN { printf "%.0f%%", 100 * (1 - a / b) }') |"
+  echo "| $model | $settled of $(count "$dir/still.h5" /frames/time_s) | $with | $without | $(saved "$with" "$without") |"
 done

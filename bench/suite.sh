@@ -38,13 +38,23 @@ command -v h5dump >/dev/null || { echo "suite: h5dump is missing: apt-get instal
 mkdir -p "$out"
 
 declare -A seconds=() ran_on=()
+# Titles of the parts whose scripts print none.
+declare -A titles=([stability]="Numerical stability under stress"
+  [blender]="Blender 3.4's hair dynamics against our simulate stage"
+  [clustering]="Clustering: counts, times, determinism, and scikit-learn on our affinities")
 # part NAME OUTPUT COMMAND...: runs COMMAND, its stdout into OUTPUT (when not -), timed.
 part() {
   local name=$1 output=$2 start
   shift 2
   echo "suite: $name" >&2
   start=$(date +%s)
-  if [[ $output == - ]]; then "$@"; else "$@" >"$out/$output.tmp" && mv "$out/$output.tmp" "$out/$output"; fi
+  if [[ $output == - ]]; then
+    "$@"
+  else
+    { [[ -z ${titles[$name]:-} ]] ||
+        printf '# %s\n\n`%s`, run by `bash bench/suite.sh %s`, %s.\n\n' "${titles[$name]}" "${*: -2}" "$name" "$(date -u +%Y-%m-%d)"
+      "$@"; } >"$out/$output.tmp" && mv "$out/$output.tmp" "$out/$output"
+  fi
   seconds[$name]=$(($(date +%s) - start))
   echo "suite: $name took ${seconds[$name]} s" >&2
   # Each part's last time, kept across runs of single parts.
