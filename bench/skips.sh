@@ -101,8 +101,9 @@ for model in ponytail01 long01; do
   still=("$bin/simulate" "$dir/extract.h5" "$dir/strands.h5" "$dir/styles.h5" --params "$params/simulate.toml" --quiet --threads "$threads" --motion still --duration_s "$still_s")
   "${still[@]}" -o "$dir/still.h5"
   settled=$(attribute "$dir/still.h5" settled_at_frame)
-  ((settled >= 0)) || settled="none (never settled)"
+  frame_count=$(count "$dir/still.h5" /frames/time_s)
+  if ((settled >= 0)); then settled="$settled of $frame_count"; else settled="never ($frame_count frames)"; fi
   with=$(time_ms "${still[@]}" -o "$dir/still.h5")
   without=$(time_ms "${still[@]}" --settle_speed_h_s 0 -o "$dir/still_all.h5")
-  echo "| $model | $settled of $(count "$dir/still.h5" /frames/time_s) | $with | $without | $(saved "$with" "$without") |"
+  echo "| $model | $settled | $with | $without | $(saved "$with" "$without") |"
 done
