@@ -80,9 +80,7 @@ echo "| model | strands | our points per guide (mean) | ours ms/frame, no collis
 echo "|---|---|---:|---:|---:|---:|---:|"
 for model in $models; do
   dir=$work/$model
-  pipeline_to_clusters "$makehuman/hair/$model.obj" "$makehuman/body.obj" "$dir"
-  "$bin/grow" "$dir/extract.h5" "$dir/types.h5" "$dir/clusters.h5" -o "$dir/strands.h5" --params "$params/grow.toml" --quiet
-  "$bin/classify" "$dir/extract.h5" "$dir/clusters.h5" "$dir/strands.h5" --model "$model_file" -o "$dir/styles.h5" --params "$params/classify.toml" --quiet 2>/dev/null
+  pipeline_to_styles "$makehuman/hair/$model.obj" "$makehuman/body.obj" "$dir" 2>/dev/null
   for n in 169 1000; do
     ms_free=$(ours "$n" false)
     ms=$(ours "$n" true)

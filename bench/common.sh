@@ -38,3 +38,13 @@ pipeline_to_clusters() {
   "$bin/cluster-middle" "$dir/types.h5" -o "$dir/middle.h5" --params "$params/cluster-middle.toml" --quiet
   "$bin/cluster-all" "$dir/types.h5" "$dir/middle.h5" -o "$dir/clusters.h5" --params "$params/cluster-all.toml" --quiet
 }
+
+# pipeline_to_styles MESH BODY DIR [GROW_OPTION...]: pipeline_to_clusters, then grow (with
+# GROW_OPTIONs) and classify (with $model_file) into DIR/{strands,styles}.h5.
+pipeline_to_styles() {
+  local mesh=$1 body=$2 dir=$3
+  shift 3
+  pipeline_to_clusters "$mesh" "$body" "$dir"
+  "$bin/grow" "$dir/extract.h5" "$dir/types.h5" "$dir/clusters.h5" -o "$dir/strands.h5" --params "$params/grow.toml" --quiet "$@"
+  "$bin/classify" "$dir/extract.h5" "$dir/clusters.h5" "$dir/strands.h5" --model "$model_file" -o "$dir/styles.h5" --params "$params/classify.toml" --quiet
+}

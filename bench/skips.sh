@@ -38,17 +38,9 @@ saved() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.0f%%", 100 * (1 - a / b) }'
 # count FILE DATASET: the first extent of a dataset.
 count() { h5ls "$1$2" | sed 's/.*{\([0-9]*\).*/\1/'; }
 
-# prepare NAME MESH BODY: the pipeline up to styles.h5 of MESH into $work/NAME.
-prepare() {
-  local dir=$work/$1
-  pipeline_to_clusters "$2" "$3" "$dir"
-  "$bin/grow" "$dir/extract.h5" "$dir/types.h5" "$dir/clusters.h5" -o "$dir/strands.h5" --params "$params/grow.toml" --quiet
-  "$bin/classify" "$dir/extract.h5" "$dir/clusters.h5" "$dir/strands.h5" --model "$model_file" -o "$dir/styles.h5" --params "$params/classify.toml" --quiet
-}
-
 for model in braid01 ponytail01 long01 short02 short03 afro01; do
   echo "skips: $model" >&2
-  prepare "$model" "$makehuman/hair/$model.obj" "$makehuman/body.obj"
+  pipeline_to_styles "$makehuman/hair/$model.obj" "$makehuman/body.obj" "$work/$model"
 done
 
 echo "# What the skips save"

@@ -57,12 +57,7 @@ stats=bench/stability_stats.py
 bench_start=$(date +%s)
 
 # prepare NAME MESH BODY: the pipeline up to styles.h5 in $work/NAME.
-prepare() {
-  local dir=$work/$1
-  pipeline_to_clusters "$2" "$3" "$dir"
-  "$bin/grow" "$dir/extract.h5" "$dir/types.h5" "$dir/clusters.h5" -o "$dir/strands.h5" --params "$params/grow.toml" --quiet
-  "$bin/classify" "$dir/extract.h5" "$dir/clusters.h5" "$dir/strands.h5" --model "$model_file" -o "$dir/styles.h5" --params "$params/classify.toml" --quiet
-}
+prepare() { pipeline_to_styles "$2" "$3" "$work/$1"; }
 names=()
 for model in $models; do
   prepare "$model" "$makehuman/hair/$model.obj" "$makehuman/body.obj"

@@ -89,16 +89,6 @@ run_variant() {
   interp_ms[$label]=$(printf '%s\n' "${interps[@]}" | median)
 }
 
-# model_dir NAME MESH BODY: the pipeline up to styles.h5 of MESH into $work/NAME.
-model_dir() {
-  local name=$1 mesh=$2 body=$3 dir=$work/$1
-  pipeline_to_clusters "$mesh" "$body" "$dir"
-  "$bin/grow" "$dir/extract.h5" "$dir/types.h5" "$dir/clusters.h5" -o "$dir/strands.h5" \
-    --params "$params/grow.toml" --strand_count "$strand_count" --quiet
-  "$bin/classify" "$dir/extract.h5" "$dir/clusters.h5" "$dir/strands.h5" --model "$model_file" \
-    -o "$dir/styles.h5" --params "$params/classify.toml" --quiet
-}
-
 inputs=()
 for model in $models; do inputs+=("$model|$makehuman/hair/$model.obj|$makehuman/body.obj"); done
 for preset in $synth; do
@@ -110,7 +100,7 @@ done
 for input in "${inputs[@]}"; do
   IFS='|' read -r name mesh body <<<"$input"
   echo "time_error: $name" >&2
-  model_dir "$name" "$mesh" "$body"
+  pipeline_to_styles "$mesh" "$body" "$work/$name" --strand_count "$strand_count"
   dir=$work/$name
   declare -A guides_of=() sim_ms=() interp_ms=()
   runs_kept=$runs

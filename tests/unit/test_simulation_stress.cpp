@@ -16,6 +16,7 @@
 #include "hair/hair_simulation.h"
 #include "hair/strand_dynamics.h"
 #include "unit/icosphere.h"
+#include "unit/strand_rest_state.h"
 
 namespace hair {
 namespace {
@@ -36,12 +37,7 @@ std::vector<Vec3> wavy_strand(int segments) {
   return points;
 }
 
-StrandState rest_state(const AltitudeStrand& strand) {
-  StrandState state;
-  state.position_m = strand.rest_m;
-  state.velocity_m_s.assign(strand.rest_m.size(), Vec3::Zero());
-  return state;
-}
+using testing::rest_state;
 
 double kinetic_energy(const AltitudeStrand& strand, const StrandState& state) {
   double energy = 0;

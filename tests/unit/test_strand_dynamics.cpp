@@ -8,6 +8,7 @@
 
 #include "hair/altitude_strand.h"
 #include "hair/strand_dynamics.h"
+#include "unit/strand_rest_state.h"
 
 namespace hair {
 namespace {
@@ -33,12 +34,7 @@ std::vector<Vec3> wavy_strand(int segments, double length_m, double amplitude_m,
   return points;
 }
 
-StrandState rest_state(const AltitudeStrand& strand) {
-  StrandState state;
-  state.position_m = strand.rest_m;
-  state.velocity_m_s.assign(strand.rest_m.size(), Vec3::Zero());
-  return state;
-}
+using testing::rest_state;
 
 double hair_length(const AltitudeStrand& strand, const std::vector<Vec3>& position_m) {
   double length = 0;
