@@ -398,7 +398,7 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     move_segment(i, tip_side - before);
     shift += tip_side - before;
   }
-  limit_ghosts(strand, material, x);
+  if (!contacts_.empty()) limit_ghosts(strand, material, x);  // else nothing moved
   // A particle the body's moves held back (it, or the strand before it, touched) loses
   // the part of its velocity they opposed: it is stopped, not thrown back.
   for (int32_t q = first_free; q < count; ++q) {
