@@ -48,6 +48,7 @@ TypedGroups read_typed_groups(const h5::File& file) {
   for (int8_t value : h5::read_enum_dataset(file, "/groups/type", group_type_members()))
     groups.type.push_back(static_cast<GroupType>(value));
   groups.head_height_m = h5::read_double_attribute(file, "/", "head_height_m");
+  groups.start_scalp_distance_m = h5::read_vector<double>(file, "/groups/start_scalp_distance_m");
   return groups;
 }
 

@@ -14,9 +14,10 @@ inline constexpr const char* kClustersSchema = "hairstyle.clusters";
 
 /// What the clustering stages read of types.h5.
 struct TypedGroups {
-  StrandSet centre_strands;     ///< /centre_strands, one per group, root first
-  std::vector<GroupType> type;  ///< /groups/type
-  double head_height_m = 0;     ///< @head_height_m
+  StrandSet centre_strands;                    ///< /centre_strands, one per group, root first
+  std::vector<GroupType> type;                 ///< /groups/type
+  double head_height_m = 0;                    ///< @head_height_m
+  std::vector<double> start_scalp_distance_m;  ///< /groups/start_scalp_distance_m
 };
 
 /// Reads the types, centre strands and H of a types.h5 file, after checking its schema.

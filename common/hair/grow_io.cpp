@@ -39,7 +39,12 @@ GrowInput read_grow_input(const h5::File& extract, const h5::File& types,
   for (int32_t cluster : grouped.cluster)
     if (cluster < 0)
       throw Error::bad_dataset(clusters.name(), "/groups/cluster", "a group has no cluster");
+  for (int32_t cluster : grouped.cluster)
+    if (static_cast<size_t>(cluster) >= grouped.starts_at_root.size())
+      throw Error::bad_dataset(clusters.name(), "/clusters/starts_at_root",
+                               "has fewer entries than there are clusters");
   input.group_cluster = std::move(grouped.cluster);
+  input.cluster_starts_at_root = std::move(grouped.starts_at_root);
   return input;
 }
 

@@ -145,19 +145,26 @@ void add_connectivity_edges(GroupGraph& graph, const StrandSet& centres,
 std::vector<uint8_t> continuing_roots(const StrandSet& centres, const std::vector<GroupType>& types,
                                       const std::vector<int32_t>& s2_node_of_group,
                                       const std::vector<int32_t>& cluster, double head_height_m,
-                                      const GraphClusteringParams& params) {
+                                      const GraphClusteringParams& params,
+                                      const std::vector<double>& start_scalp_distance_m,
+                                      double min_scalp_distance_m) {
   std::vector<uint8_t> continues(types.size(), 0);
   std::vector<Bounds> bounds = centre_bounds(centres);
   auto reach_m = static_cast<float>(params.connectivity.f1_max * head_height_m);
   int directions = params.either_orientation ? 2 : 1;
   for (size_t g = 0; g < types.size(); ++g) {
     if (!is_root_type(types[g]) || s2_node_of_group[g] < 0) continue;
+    if (!start_scalp_distance_m.empty() && start_scalp_distance_m[g] < min_scalp_distance_m)
+      continue;
     auto root_group = centres.strand(static_cast<int64_t>(g));
     for (size_t h = 0; h < types.size() && !continues[g]; ++h) {
       if (h == g || s2_node_of_group[h] < 0 || cluster[h] != cluster[g] ||
           bounds_gap(bounds[g], bounds[h]) >= reach_m)
         continue;
-      for (int h_reversed = 0; h_reversed < directions && !continues[g]; ++h_reversed) {
+      // A root-type group read backwards ends at the scalp: a group that starts there
+      // lies beside its root (the other side of a parting, or a crown), not after it.
+      int h_directions = is_root_type(types[h]) ? 1 : directions;
+      for (int h_reversed = 0; h_reversed < h_directions && !continues[g]; ++h_reversed) {
         Points3f before = centres.strand(static_cast<int64_t>(h));
         if (h_reversed) before = before.colwise().reverse().eval();
         ConnectionFeatures features =
@@ -251,8 +258,11 @@ std::vector<int32_t> each_middle_group_alone(const std::vector<GroupType>& types
 
 HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupType>& types,
                             const std::vector<int32_t>& middle_cluster, double head_height_m,
-                            const HairClusteringParams& params) {
+                            const HairClusteringParams& params,
+                            const std::vector<double>& start_scalp_distance_m) {
   check_inputs(centres, types, head_height_m);
+  if (!start_scalp_distance_m.empty() && start_scalp_distance_m.size() != types.size())
+    throw Error::bad_input("", "scalp distances and types differ in group count");
   if (middle_cluster.size() != types.size())
     throw Error::bad_input("", "middle clusters and types differ in group count");
   HairClustering result;
@@ -320,7 +330,8 @@ HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupTyp
   result.continues_group.assign(group_count, 0);
   if (params.split_at_type_change && params.split_continued_roots)
     result.continues_group = continuing_roots(
-        centres, types, s2_node_of_group, result.cluster_before_split, head_height_m, params.graph);
+        centres, types, s2_node_of_group, result.cluster_before_split, head_height_m, params.graph,
+        start_scalp_distance_m, params.continued_root_min_scalp_distance_h * head_height_m);
   auto side_of = [&](size_t g) {
     return is_root_type(types[g]) && !result.continues_group[g] ? 0 : 1;
   };

@@ -90,11 +90,16 @@ struct HairClusteringParams {
   /// (0.08 H) before it, but at this level's reach (f1_max) it continues a chain, so it does
   /// not start at the root. braid01: one braid stream, whose strips start 0.16 H below the
   /// cap groups that run into it, is typed root_connected and stays with the cap without
-  /// this. Off by default: grow roots strands at every root-type group and seeds each
-  /// cluster's field from them, so with it on braid01's braid cluster gets 88% of its
-  /// strands rooted at the nape and classify reads it normal, and grow's fields no longer
-  /// bridge the wide gaps of the synthetic layered presets (docs/clustering.md, "Not done").
-  bool split_continued_roots = false;
+  /// this. grow roots no strand at such a group (its cluster does not start at the root)
+  /// and reaches it across the gap (GrowParams::continued_root_radius_h).
+  bool split_continued_roots = true;
+  /// ...but only a group whose centre strand starts at least this far from the scalp
+  /// (types.h5 /groups/start_scalp_distance_m), in H: groups that start on the scalp
+  /// beside one another (a crown, the two sides of a parting) line up as well as a
+  /// continuation does. braid01's continued strips start 0.066-0.117 H from the scalp,
+  /// its cap groups within 0.028 H; of the synthetic corpus's true first pieces typed
+  /// root, 64 of 66 start within 0.04 H.
+  double continued_root_min_scalp_distance_h = 0.05;
 };
 
 /// Result of the second level: every group in a hair cluster (section 4.3).
@@ -127,9 +132,12 @@ struct HairClustering {
 ///
 /// @param middle_cluster  per group, from cluster_middle_groups(); every middle group
 ///                        must have one (each_middle_group_alone() for one level only)
+/// @param start_scalp_distance_m  per group, from start_scalp_distances(); empty when not
+///                        known, and then any root-type group may continue another
 HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupType>& types,
                             const std::vector<int32_t>& middle_cluster, double head_height_m,
-                            const HairClusteringParams& params);
+                            const HairClusteringParams& params,
+                            const std::vector<double>& start_scalp_distance_m = {});
 
 /// A middle clustering that puts every middle group in a cluster of its own: with it,
 /// cluster_hair() is one-level spectral clustering over all groups (the baseline the

@@ -61,12 +61,20 @@ class GrowingContext {
       group_strands_[static_cast<size_t>(group[static_cast<size_t>(s)])].push_back(
           static_cast<int32_t>(s));
 
-    // Points of the root-type strands, for the roots' clusters and reference lengths.
+    // Points of the strands that carry roots, for the roots' clusters and reference
+    // lengths: root-type strands of clusters that start at the root; else any root-type
+    // strand; else any strand.
     std::vector<int64_t> rows;
     for (int64_t s = 0; s < strand_count; ++s)
-      if (is_root_type(type_of_strand(s)))
+      if (carries_roots(s))
         for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
           rows.push_back(row);
+    if (rows.empty()) {
+      for (int64_t s = 0; s < strand_count; ++s)
+        if (is_root_type(type_of_strand(s)))
+          for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
+            rows.push_back(row);
+    }
     if (rows.empty()) {
       any_type_roots_ = true;
       for (int64_t row = 0; row < strands.point_count(); ++row) rows.push_back(row);
@@ -107,6 +115,19 @@ class GrowingContext {
     return input_.group_cluster[static_cast<size_t>(strand_group_[static_cast<size_t>(s)])];
   }
   int32_t group_of_strand(int64_t s) const { return strand_group_[static_cast<size_t>(s)]; }
+  bool cluster_starts_at_root(int32_t cluster) const {
+    const auto& starts = input_.cluster_starts_at_root;
+    return starts.empty() || starts.at(static_cast<size_t>(cluster)) != 0;
+  }
+  /// A root-type strand of a cluster that starts at the root: roots grow near it.
+  bool carries_roots(int64_t s) const {
+    return is_root_type(type_of_strand(s)) && cluster_starts_at_root(cluster_of_strand(s));
+  }
+  /// A root-type strand of a cluster that does not start at the root: it continues
+  /// another group (cluster-all's split_continued_roots).
+  bool continues_another(int64_t s) const {
+    return is_root_type(type_of_strand(s)) && !cluster_starts_at_root(cluster_of_strand(s));
+  }
   bool any_type_roots() const { return any_type_roots_; }
 
   /// The input-strand point nearest `point` among the root-type strands (all strands
@@ -158,11 +179,19 @@ class GrowingContext {
                                         int32_t preferred_cluster, int32_t excluded_cluster) const {
     const StrandSet& strands = input_.input_strands;
     double radius_m = params_.continue_radius_h * h_;
+    double search_m = std::max(radius_m, params_.continued_root_radius_h * h_);
     double min_cos = std::cos(params_.continue_max_angle_deg * std::numbers::pi / 180);
     std::optional<StrandEntry> best_same, best_other;
     double score_same = std::numeric_limits<double>::infinity(), score_other = score_same;
-    for (int32_t e : entry_index_->within(point.cast<float>(), static_cast<float>(radius_m))) {
+    for (int32_t e : entry_index_->within(point.cast<float>(), static_cast<float>(search_m))) {
       const StrandEntry& entry = entries_[static_cast<size_t>(e)];
+      // Beyond continue_radius_h only the start of a group that continues another.
+      double reach_m = !entry.backward && continues_another(entry.strand) ? search_m : radius_m;
+      if ((point_of(strands.points, entry.backward ? strands.offsets[entry.strand + 1] - 1
+                                                   : strands.offsets[entry.strand]) -
+           point)
+              .norm() > reach_m)
+        continue;
       int32_t group = group_of_strand(entry.strand);
       int32_t cluster = cluster_of_strand(entry.strand);
       if (cluster == excluded_cluster) continue;
@@ -179,7 +208,7 @@ class GrowingContext {
       if (turn_cos < min_cos) continue;
       // Not behind us by more than the radius allows, and not across the gap sideways.
       Vec3 gap = start - point;
-      double score = gap.norm() / radius_m + (1 - turn_cos);
+      double score = gap.norm() / reach_m + (1 - turn_cos);
       bool same = cluster == preferred_cluster;
       double& best_score = same ? score_same : score_other;
       auto& best_entry = same ? best_same : best_other;
@@ -396,8 +425,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     if (result.clusters[static_cast<size_t>(c)].strand_count == 0) continue;
     std::vector<int64_t> ids;
     for (int64_t s = 0; s < strands.strand_count(); ++s)
-      if (context.cluster_of_strand(s) == c && is_root_type(context.type_of_strand(s)))
-        ids.push_back(s);
+      if (context.cluster_of_strand(s) == c && context.carries_roots(s)) ids.push_back(s);
     if (ids.empty()) continue;
     fields[static_cast<size_t>(c)] = OrientationField::build(strands, ids, field_params);
     result.clusters[static_cast<size_t>(c)].field_voxel_count =

@@ -38,6 +38,11 @@ struct GrowParams {
   double continue_radius_h = 0.08;
   /// ...and leave within this angle of the current direction.
   double continue_max_angle_deg = 60;
+  /// A root-type group that continues another (one whose cluster does not start at the
+  /// root: cluster-all's split_continued_roots) is entered from within this distance, the
+  /// reach of cluster-all's connections (f1_max): typeify typed it root because nothing
+  /// lay within its own reach before it, so the gap to it is wider than continue_radius_h.
+  double continued_root_radius_h = 0.25;
   /// A strand following an input strand's group is lost (and looks for the next group)
   /// farther than this from the group's rails.
   double follow_radius_h = 0.08;
@@ -55,6 +60,9 @@ struct GrowInput {
   StrandSet input_strands;             ///< root first; strand_attributes "group"
   std::vector<GroupType> group_type;   ///< per group
   std::vector<int32_t> group_cluster;  ///< per group, final clusters
+  /// Per final cluster (clusters.h5 /clusters/starts_at_root): whether it starts at the
+  /// root. Empty: every cluster with a root-type group does.
+  std::vector<uint8_t> cluster_starts_at_root;
   Points3f body_vertices;
   Triangles3i body_triangles;
   std::vector<uint8_t> scalp_triangle;  ///< per body triangle
@@ -90,8 +98,10 @@ struct GrowResult {
 };
 
 /// Grows strands from the scalp (paper section 4.4, Figure 7):
-///  1. roots: blue noise over the scalp triangles that root-type input strands cover,
-///     each in the cluster of the nearest root-type input strand;
+///  1. roots: blue noise over the scalp triangles that root-type input strands of clusters
+///     that start at the root cover, each in the cluster of the nearest such strand (a
+///     root-type group that continues another, in a cluster that does not start at the
+///     root, carries no roots);
 ///  2. one orientation field per cluster that has roots, from its root-type strands;
 ///  3. each strand follows its cluster's field (RK2) until it leaves the field or has
 ///     grown as long as the input strand nearest its root; then it follows the closest

@@ -43,6 +43,9 @@ struct GroupTypes {
   std::vector<std::vector<float>> after_angle_rad;  ///< angle of flow to each T(g) member
   double connect_angle_threshold_rad = 0;           ///< the threshold used
   bool threshold_from_distribution = false;         ///< true when taken from the angles
+  /// Per group: distance from its centre strand's first point to the scalp, metres
+  /// (start_scalp_distances(); group_types() leaves it empty, the stage fills it).
+  std::vector<double> start_scalp_distance_m;
 };
 
 /// The centre strand of each group: every strand resampled by arc length to

@@ -51,6 +51,9 @@ void write_types_file(h5::File& file, const GroupTypes& types, double head_heigh
   h5::write_string_attribute(file, "/", "connect_threshold_source",
                              types.threshold_from_distribution ? "distribution" : "parameter");
   h5::write_enum_dataset(file, "/groups/type", h5::enum_values(types.type), group_type_members());
+  if (types.start_scalp_distance_m.size() != types.type.size())
+    throw Error::bad_input(file.name(), "every group needs its distance to the scalp");
+  h5::write_vector(file, "/groups/start_scalp_distance_m", types.start_scalp_distance_m);
   StrandSet centres = types.centre_strands;
   centres.strand_attributes.clear();
   centres.point_attributes.clear();

@@ -30,15 +30,20 @@ int main(int argc, char** argv) {
   app.params().add(
       "split_continued_roots", params.split_continued_roots,
       "in that division, a root-type group whose start continues another group of "
-      "its cluster (within the connectivity bounds) goes with the distal part (off: grow "
-      "still roots strands at such groups, docs/clustering.md)");
+      "its cluster (within the connectivity bounds) goes with the distal part, which does "
+      "not start at the root (docs/clustering.md)");
+  app.params().add("continued_root_min_scalp_distance_h",
+                   params.continued_root_min_scalp_distance_h,
+                   "...when its centre strand starts at least this far from the scalp, in H",
+                   hair::ParamRange::at_least(0));
 
   return app.run(argc, argv, [&] {
     hair::TypedGroups groups = hair::read_typed_groups(hair::h5::File::open_read_only(types_path));
     std::vector<int32_t> middle_cluster =
         hair::read_middle_clusters(hair::h5::File::open_read_only(middle_path), groups.type.size());
-    hair::HairClustering clustering = hair::cluster_hair(
-        groups.centre_strands, groups.type, middle_cluster, groups.head_height_m, params);
+    hair::HairClustering clustering =
+        hair::cluster_hair(groups.centre_strands, groups.type, middle_cluster, groups.head_height_m,
+                           params, groups.start_scalp_distance_m);
     spdlog::info("{}: {} clusters from {} nodes ({}), {} divided at a type change: {} clusters",
                  types_path, clustering.clusters_before_split, clustering.graph.node_count,
                  hair::cluster_count_source_name(clustering.count_source), clustering.split_count,

@@ -42,6 +42,10 @@ int main(int argc, char** argv) {
   p.add("continue_max_angle_deg", params.continue_max_angle_deg,
         "...and leave within this angle of the current direction",
         hair::ParamRange::closed(0, 180));
+  p.add("continued_root_radius_h", params.continued_root_radius_h,
+        "a root-type group that continues another (its cluster does not start at the root) is "
+        "entered from this far, in H",
+        hair::ParamRange::above(0));
   p.add("follow_radius_h", params.follow_radius_h,
         "a strand following an input strand is lost farther than this from its group, in H",
         hair::ParamRange::above(0));

@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include "hair/atomic_file.h"
+#include "hair/extract_io.h"
+#include "hair/group_scalp_distance.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/provenance.h"
 #include "hair/stage_app.h"
@@ -40,10 +42,13 @@ int main(int argc, char** argv) {
   });
 
   return app.run(argc, argv, [&] {
-    hair::ExtractedStrands extracted =
-        hair::read_extracted_strands(hair::h5::File::open_read_only(extract_path));
+    hair::h5::File extract = hair::h5::File::open_read_only(extract_path);
+    hair::ExtractedStrands extracted = hair::read_extracted_strands(extract);
+    hair::ExtractedBody body = hair::read_extracted_body(extract);
     hair::GroupTypes types = hair::group_types(extracted.strands, extracted.group_first_strand,
                                                extracted.head_height_m, params);
+    types.start_scalp_distance_m = hair::start_scalp_distances(types.centre_strands, body.vertices,
+                                                               body.triangles, body.scalp_triangle);
     std::array<int, 4> counts{};
     for (hair::GroupType type : types.type) ++counts[static_cast<size_t>(type)];
     spdlog::info(

@@ -144,9 +144,23 @@ TEST(HairClustering, ARootTypedStripThatContinuesTheCapIsDividedFromIt) {
   EXPECT_EQ(hair.cluster_starts_at_root, (std::vector<uint8_t>{1, 0}));
   EXPECT_EQ(hair.cluster_group_count, (std::vector<int32_t>{1, 5}));
 
-  // Without the rule (the default) the strip, a root type, stays with the cap.
-  HairClustering before = cluster_hair(scene.centres, scene.types, middle.middle_cluster,
-                                       kHeadHeight, HairClusteringParams{});
+  // The same with the strip starting 0.12 H from the scalp, the cap on it.
+  std::vector<double> scalp_distance_m = {0.0, 0.12 * kHeadHeight, 0.2, 0.2, 0.2, 0.2};
+  HairClustering off_scalp = cluster_hair(scene.centres, scene.types, middle.middle_cluster,
+                                          kHeadHeight, continued, scalp_distance_m);
+  EXPECT_EQ(off_scalp.cluster, hair.cluster);
+  // A strip that starts on the scalp (under 0.05 H) starts at a root: it stays.
+  scalp_distance_m[1] = 0.03 * kHeadHeight;
+  HairClustering on_scalp = cluster_hair(scene.centres, scene.types, middle.middle_cluster,
+                                         kHeadHeight, continued, scalp_distance_m);
+  EXPECT_EQ(on_scalp.continues_group, (std::vector<uint8_t>(6, 0)));
+  EXPECT_EQ(on_scalp.cluster, (std::vector<int32_t>{0, 0, 1, 1, 1, 1}));
+
+  // Without the rule the strip, a root type, stays with the cap.
+  HairClusteringParams whole_roots;
+  whole_roots.split_continued_roots = false;
+  HairClustering before =
+      cluster_hair(scene.centres, scene.types, middle.middle_cluster, kHeadHeight, whole_roots);
   EXPECT_EQ(before.cluster, (std::vector<int32_t>{0, 0, 1, 1, 1, 1}));
   EXPECT_EQ(before.continues_group, (std::vector<uint8_t>(6, 0)));
 
@@ -160,6 +174,22 @@ TEST(HairClustering, ARootTypedStripThatContinuesTheCapIsDividedFromIt) {
   HairClustering far =
       cluster_hair(apart.centres, apart.types, middle.middle_cluster, kHeadHeight, continued);
   EXPECT_EQ(far.continues_group, (std::vector<uint8_t>(6, 0)));
+}
+
+// Two root groups that start 2 cm apart on either side of a parting and run apart in a
+// line: read backwards, each runs into the other, but a root group read backwards ends at
+// the scalp, so neither continues the other, even off the scalp.
+TEST(HairClustering, RootGroupsOnEitherSideOfAPartingDoNotContinueEachOther) {
+  std::vector<Points3f> pieces = {piece({0.01f, 0, 0}, {0.11f, 0, 0}),
+                                  piece({-0.01f, 0, 0}, {-0.11f, 0, 0})};
+  std::vector<GroupType> types = {GroupType::root_connected, GroupType::root_connected};
+  StrandSet centres = strand_set_from_polylines(pieces);
+  std::vector<int32_t> no_middle = {-1, -1};
+  HairClustering hair =
+      cluster_hair(centres, types, no_middle, kHeadHeight, HairClusteringParams{}, {0.1, 0.1});
+  ASSERT_EQ(hair.clusters_before_split, 1);
+  EXPECT_EQ(hair.continues_group, (std::vector<uint8_t>{0, 0}));
+  EXPECT_EQ(hair.cluster_starts_at_root, (std::vector<uint8_t>{1}));
 }
 
 TEST(HairClustering, NoMiddleGroupsIsSkippedAndBadInputRefused) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "hair/extract.h"
+#include "hair/group_scalp_distance.h"
 #include "hair/hair_clustering.h"
 #include "hair/mesh_io.h"
 #include "hair/point_index.h"
@@ -213,12 +214,15 @@ Grown grow_model(const SynthModel& model, const PolyMesh& body, const std::strin
   GroupTypes found = group_types(extract.strands, extract.group_first_strand, h, TypeifyParams{});
   MiddleClustering middle =
       cluster_middle_groups(found.centre_strands, found.type, h, GraphClusteringParams{});
-  HairClustering clusters = cluster_hair(found.centre_strands, found.type, middle.middle_cluster, h,
-                                         HairClusteringParams{});
+  HairClustering clusters = cluster_hair(
+      found.centre_strands, found.type, middle.middle_cluster, h, HairClusteringParams{},
+      start_scalp_distances(found.centre_strands, extract.body_vertices, extract.body_triangles,
+                            extract.scalp_triangle));
   GrowInput input;
   input.input_strands = std::move(extract.strands);
   input.group_type = found.type;
   input.group_cluster = clusters.cluster;
+  input.cluster_starts_at_root = clusters.cluster_starts_at_root;
   input.body_vertices = std::move(extract.body_vertices);
   input.body_triangles = std::move(extract.body_triangles);
   input.scalp_triangle = std::move(extract.scalp_triangle);
