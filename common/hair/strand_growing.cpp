@@ -14,6 +14,7 @@
 #include "hair/orientation_field.h"
 #include "hair/point_index.h"
 #include "hair/surface_sampling.h"
+#include "hair/triangle_mesh_distance.h"
 
 namespace hair {
 
@@ -89,6 +90,28 @@ class GrowingContext {
       for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
         point_strand_[static_cast<size_t>(row)] = static_cast<int32_t>(s);
 
+    // Per group, an index of its points for follow().
+    group_index_.resize(group_strands_.size());
+    group_rows_.resize(group_strands_.size());
+    group_reach_m_.assign(group_strands_.size(), 0.0);
+    for (size_t g = 0; g < group_strands_.size(); ++g) {
+      double longest_m = 0;
+      for (int32_t s : group_strands_[g])
+        for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row) {
+          group_rows_[g].push_back(row);
+          if (row + 1 < strands.offsets[s + 1])
+            longest_m = std::max(
+                longest_m,
+                (point_of(strands.points, row + 1) - point_of(strands.points, row)).norm());
+        }
+      Points3f points(static_cast<Eigen::Index>(group_rows_[g].size()), 3);
+      for (size_t i = 0; i < group_rows_[g].size(); ++i)
+        points.row(static_cast<Eigen::Index>(i)) = strands.points.row(group_rows_[g][i]);
+      group_index_[g] = std::make_unique<PointIndex>(points);
+      // A little beyond follow_radius_h + half the longest segment, for float rounding.
+      group_reach_m_[g] = 1.01 * (params.follow_radius_h * h_ + 0.5 * longest_m) + 1e-6;
+    }
+
     // Entries: both ends of every input strand.
     Points3f entry_points(2 * strand_count, 3);
     for (int64_t s = 0; s < strand_count; ++s) {
@@ -98,6 +121,16 @@ class GrowingContext {
       entries_.push_back({static_cast<int32_t>(s), true});
     }
     entry_index_ = std::make_unique<PointIndex>(entry_points);
+
+    // Heights above the body, for layers.
+    if (params.layer_radius_h > 0) {
+      body_distance_ =
+          std::make_unique<TriangleMeshDistance>(input.body_vertices, input.body_triangles);
+      height_m_.resize(static_cast<size_t>(strands.point_count()));
+      for (int64_t row = 0; row < strands.point_count(); ++row)
+        height_m_[static_cast<size_t>(row)] =
+            body_distance_->distance(point_of(strands.points, row));
+    }
 
     // Arc length from each point to its strand's tip.
     length_to_tip_m_.assign(static_cast<size_t>(strands.point_count()), 0.0);
@@ -137,6 +170,55 @@ class GrowingContext {
         root_index_->nearest(point.cast<float>(), 1).front())];
   }
   int32_t strand_of_point(int64_t row) const { return point_strand_[static_cast<size_t>(row)]; }
+
+  bool layered() const { return body_distance_ != nullptr; }
+  const TriangleMeshDistance& body_distance() const { return *body_distance_; }
+  /// Height above the body of the input strand through `row`, `length_m` further along it
+  /// towards its tip (its tip's height beyond it); `cursor` (a row of the same strand, at
+  /// or after `row`) makes a walk along the strand linear.
+  double height_along(int64_t row, double length_m, int64_t& cursor) const {
+    const StrandSet& strands = input_.input_strands;
+    int64_t last = strands.offsets[strand_of_point(row) + 1] - 1;
+    double remaining_m = length_to_tip_m(row) - length_m;
+    cursor = std::max(cursor, row);
+    while (cursor < last && length_to_tip_m(cursor + 1) >= remaining_m) ++cursor;
+    if (cursor == last) return height_m_[static_cast<size_t>(last)];
+    double a = length_to_tip_m(cursor), b = length_to_tip_m(cursor + 1);
+    double t = a > b ? std::clamp((a - remaining_m) / (a - b), 0.0, 1.0) : 0.0;
+    return (1 - t) * height_m_[static_cast<size_t>(cursor)] +
+           t * height_m_[static_cast<size_t>(cursor + 1)];
+  }
+
+  /// The reference point of the root `root_id` at `root`: the nearest point of a
+  /// root-carrying strand, or with layers, that strand's point nearest the root on a strand
+  /// drawn by hash among those of the nearest one's cluster within layer_radius_h.
+  int64_t reference_row(const Vec3& root, int64_t root_id) const {
+    int64_t nearest = nearest_root_point(root);
+    if (!layered() || any_type_roots_) return nearest;
+    int32_t cluster = cluster_of_strand(strand_of_point(nearest));
+    // Per candidate strand, its nearest point: the ids come nearest first, so after a
+    // stable sort by strand the first of each strand.
+    std::vector<std::pair<int32_t, int64_t>> candidates;
+    for (int32_t id :
+         root_index_->within(root.cast<float>(), static_cast<float>(params_.layer_radius_h * h_))) {
+      int64_t row = root_point_rows_[static_cast<size_t>(id)];
+      int32_t s = strand_of_point(row);
+      if (cluster_of_strand(s) == cluster) candidates.emplace_back(s, row);
+    }
+    if (candidates.empty()) return nearest;
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    candidates.erase(std::unique(candidates.begin(), candidates.end(),
+                                 [](const auto& a, const auto& b) { return a.first == b.first; }),
+                     candidates.end());
+    // SplitMix64 of the root's id and the seed: the same draw whatever the thread count.
+    uint64_t z = static_cast<uint64_t>(root_id) * 0x9E3779B97F4A7C15ull +
+                 static_cast<uint64_t>(params_.seed) + 0x632BE59BD9B4E019ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return candidates[static_cast<size_t>(z % candidates.size())].second;
+  }
   double length_to_tip_m(int64_t row) const { return length_to_tip_m_[static_cast<size_t>(row)]; }
 
   /// Closest point of the rails of `group` to `point`: the tangent there (along the
@@ -144,29 +226,44 @@ class GrowingContext {
   struct Following {
     Vec3 direction;
     bool past_end = false;
-    double distance_m = 0;  ///< from the rail
+    double distance_m = 0;        ///< from the rail
+    Vec3 closest = Vec3::Zero();  ///< the rail's point nearest
   };
+  /// Only rails within follow_radius_h are looked at: farther, the point is lost anyway
+  /// (distance_m is then infinite).
   Following follow(int32_t group, bool backward, const Vec3& point) const {
     const StrandSet& strands = input_.input_strands;
     double best = std::numeric_limits<double>::infinity();
     Following result{Vec3::UnitY() * -1.0, true, best};
-    for (int32_t s : group_strands_[static_cast<size_t>(group)]) {
+    const auto g = static_cast<size_t>(group);
+    // A segment with a point within follow_radius_h has an end within that plus half its
+    // length: the segments at the group's points within reach_m are all there can be.
+    std::vector<int64_t> segments;  // first rows
+    for (int32_t id :
+         group_index_[g]->within(point.cast<float>(), static_cast<float>(group_reach_m_[g]))) {
+      int64_t row = group_rows_[g][static_cast<size_t>(id)];
+      int32_t s = strand_of_point(row);
+      if (row > strands.offsets[s]) segments.push_back(row - 1);
+      if (row + 1 < strands.offsets[s + 1]) segments.push_back(row);
+    }
+    std::sort(segments.begin(), segments.end());
+    segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+    for (int64_t row : segments) {
+      int32_t s = strand_of_point(row);
       int64_t first = strands.offsets[s], last = strands.offsets[s + 1] - 1;
-      for (int64_t row = first; row < last; ++row) {
-        Vec3 a = point_of(strands.points, row), b = point_of(strands.points, row + 1);
-        Vec3 ab = b - a;
-        double length2 = ab.squaredNorm();
-        if (length2 <= 0) continue;
-        double t = std::clamp((point - a).dot(ab) / length2, 0.0, 1.0);
-        double distance2 = (a + t * ab - point).squaredNorm();
-        if (distance2 >= best) continue;
-        best = distance2;
-        Vec3 direction = ab.normalized() * (backward ? -1.0 : 1.0);
-        // Past the end: beyond the last segment's far end in the reading direction.
-        bool at_end = backward ? (row == first && t <= 0.0) : (row == last - 1 && t >= 1.0);
-        result = {direction, at_end && (point - (backward ? a : b)).dot(direction) >= 0,
-                  std::sqrt(distance2)};
-      }
+      Vec3 a = point_of(strands.points, row), b = point_of(strands.points, row + 1);
+      Vec3 ab = b - a;
+      double length2 = ab.squaredNorm();
+      if (length2 <= 0) continue;
+      double t = std::clamp((point - a).dot(ab) / length2, 0.0, 1.0);
+      double distance2 = (a + t * ab - point).squaredNorm();
+      if (distance2 >= best) continue;
+      best = distance2;
+      Vec3 direction = ab.normalized() * (backward ? -1.0 : 1.0);
+      // Past the end: beyond the last segment's far end in the reading direction.
+      bool at_end = backward ? (row == first && t <= 0.0) : (row == last - 1 && t >= 1.0);
+      result = {direction, at_end && (point - (backward ? a : b)).dot(direction) >= 0,
+                std::sqrt(distance2), a + t * ab};
     }
     return result;
   }
@@ -229,14 +326,22 @@ class GrowingContext {
   double h_;
   std::vector<int32_t> strand_group_;
   std::vector<std::vector<int32_t>> group_strands_;
+  std::vector<std::unique_ptr<PointIndex>> group_index_;  ///< per group, over group_rows_
+  std::vector<std::vector<int64_t>> group_rows_;          ///< per group, its points' rows
+  std::vector<double> group_reach_m_;                     ///< per group, for follow()
   std::vector<int64_t> root_point_rows_;
   std::unique_ptr<PointIndex> root_index_;
   std::vector<int32_t> point_strand_;
   std::vector<StrandEntry> entries_;
   std::unique_ptr<PointIndex> entry_index_;
   std::vector<double> length_to_tip_m_;
+  std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
+  std::vector<double> height_m_;                         ///< per input point, with layers
   bool any_type_roots_ = false;
 };
+
+/// Steps between two pulls of a strand towards its layer's height.
+constexpr int kLayerEvery = 3;
 
 /// One strand being grown: its points and the rule of each.
 struct GrowingStrand {
@@ -255,7 +360,7 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
   const GrowParams& params = context.params();
   double h = context.input().head_height_m;
   double step_m = params.step_h * h, clearance_m = params.body_clearance_h * h;
-  double lost_m = params.follow_radius_h * h;
+  double lost_m = params.follow_radius_h * h, keep_m = params.follow_keep_h * h;
   GrowingStrand strand;
   auto add_point = [&](Vec3 point, GrowRule rule, int32_t cluster, int32_t group) {
     if (rule != GrowRule::root && body.push_out(point, clearance_m)) ++strand.pushed_out;
@@ -276,6 +381,8 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
     double length_limit_m = params.length_factor * context.length_to_tip_m(reference_row);
     double length_m = 0;
     Vec3 point = root;
+    int64_t cursor = reference_row;
+    int steps_since_layer = 0;
     left_field_early = true;
     while (!full()) {
       if (length_m + step_m > length_limit_m) {
@@ -287,6 +394,27 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
       std::optional<Vec3> d2 = field->direction(point + 0.5 * step_m * *d1);
       if (!d2) break;
       Vec3 next = point + step_m * *d2;
+      if (context.layered() && ++steps_since_layer == kLayerEvery) {
+        // Towards the reference strand's height above the body, every kLayerEvery steps
+        // by at most layer_pull of those steps: the height and its direction from the
+        // body's signed distance field inside its band, from the exact distance beyond
+        // it (the costlier query: a third of grow's time on long01 when made every step).
+        double height_m = body.distance(next);
+        Vec3 up = Vec3::Zero();
+        if (height_m < body.band_m() - 1.5 * body.voxel_m()) {
+          up = body.gradient(next);
+        } else {
+          TriangleMeshDistance::Nearest body_point = context.body_distance().nearest(next);
+          height_m = body_point.distance;
+          if (height_m > 0) up = (next - body_point.closest_point) / height_m;
+        }
+        if (up.squaredNorm() > 0) {
+          double target_m = context.height_along(reference_row, length_m + step_m, cursor);
+          double pull_m = params.layer_pull * step_m * kLayerEvery;
+          next += up.normalized() * std::clamp(target_m - height_m, -pull_m, pull_m);
+        }
+        steps_since_layer = 0;
+      }
       if (!field->contains(next)) break;
       add_point(next, GrowRule::field, root_cluster, -1);
       direction = *d2;
@@ -302,7 +430,7 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
   if (strand.points.size() == 1) {
     // No field here (a root cluster without one, or a root outside its band): start on
     // the input strand nearest the root.
-    int32_t s = context.strand_of_point(reference_row);
+    int32_t s = context.strand_of_point(context.nearest_root_point(root));
     group = context.group_of_strand(s);
     cluster = context.cluster_of_strand(s);
     visited.push_back(group);
@@ -333,7 +461,15 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
       bool turned_back = direction.squaredNorm() > 0 && following.direction.dot(direction) < 0;
       if (!following.past_end && following.distance_m <= lost_m && !turned_back) {
         direction = following.direction;
-        add_point(point + step_m * direction, GrowRule::input_strand, cluster, group);
+        Vec3 next = point + step_m * direction;
+        double excess_m = following.distance_m - keep_m;
+        if (excess_m > 0 && params.follow_pull > 0) {
+          Vec3 towards = following.closest - point;
+          towards -= towards.dot(direction) * direction;
+          if (towards.squaredNorm() > 0)
+            next += towards.normalized() * std::min(excess_m, params.follow_pull * step_m);
+        }
+        add_point(next, GrowRule::input_strand, cluster, group);
         continue;
       }
     }
@@ -407,9 +543,9 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   auto root_count = static_cast<int64_t>(roots.positions.rows());
   std::vector<int64_t> reference_row(static_cast<size_t>(root_count));
   std::vector<int32_t> root_cluster(static_cast<size_t>(root_count));
+#pragma omp parallel for schedule(dynamic, 256)
   for (int64_t r = 0; r < root_count; ++r) {
-    reference_row[static_cast<size_t>(r)] =
-        context.nearest_root_point(point_of(roots.positions, r));
+    reference_row[static_cast<size_t>(r)] = context.reference_row(point_of(roots.positions, r), r);
     root_cluster[static_cast<size_t>(r)] =
         context.cluster_of_strand(context.strand_of_point(reference_row[static_cast<size_t>(r)]));
   }

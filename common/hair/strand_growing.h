@@ -46,9 +46,24 @@ struct GrowParams {
   /// A strand following an input strand's group is lost (and looks for the next group)
   /// farther than this from the group's rails.
   double follow_radius_h = 0.08;
+  /// A strand following a group drifts back towards its nearest rail where it lies farther
+  /// than follow_keep_h from it, by at most follow_pull steps per step (0: it keeps the
+  /// offset it entered with).
+  double follow_keep_h = 0.02;
+  double follow_pull = 0.5;
   /// Grown points are kept this far outside the body (its signed distance field).
   double body_clearance_h = 0.004;
   double body_voxel_h = 0.01;  ///< spacing of the body's signed distance field
+  /// Layers of hair (a bob's outer strips lie 0.05-0.15 H off the head, over inner ones):
+  /// a root's reference input strand (which gives its length limit, and the height its
+  /// strand keeps above the body along the field) is drawn, by a hash of the root, among
+  /// the strands of the root's cluster that carry roots and pass within this distance of
+  /// it. 0: the nearest strand, and strands follow the field at whatever height it takes
+  /// them.
+  double layer_radius_h = 0.1;
+  /// Along the field, each step moves a strand towards its reference strand's height above
+  /// the body (at the same arc length) by at most this share of a step.
+  double layer_pull = 0.5;
   int max_points_per_strand = 2000;
   /// No strand grows longer than this (a guard against strands that wander from group to
   /// group; the longest MakeHuman hair, long01, is about 3.5 H).

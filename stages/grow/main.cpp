@@ -49,10 +49,23 @@ int main(int argc, char** argv) {
   p.add("follow_radius_h", params.follow_radius_h,
         "a strand following an input strand is lost farther than this from its group, in H",
         hair::ParamRange::above(0));
+  p.add("follow_keep_h", params.follow_keep_h,
+        "a strand following a group drifts back towards its nearest rail beyond this, in H",
+        hair::ParamRange::at_least(0));
+  p.add("follow_pull", params.follow_pull, "...by at most this share of a step per step (0: never)",
+        hair::ParamRange::closed(0, 1));
   p.add("body_clearance_h", params.body_clearance_h,
         "grown points are kept this far outside the body, in H", hair::ParamRange::at_least(0));
   p.add("body_voxel_h", params.body_voxel_h, "spacing of the body's signed distance field, in H",
         hair::ParamRange::closed(0.001, 0.1));
+  p.add("layer_radius_h", params.layer_radius_h,
+        "a root's reference strand (its length, and the height its strand keeps above the "
+        "body) is drawn among the strands within this distance of it, in H; 0: the nearest",
+        hair::ParamRange::at_least(0));
+  p.add("layer_pull", params.layer_pull,
+        "along the field a strand moves towards its reference strand's height by at most this "
+        "share of a step",
+        hair::ParamRange::closed(0, 1));
   p.add("max_length_h", params.max_length_h, "no strand grows longer than this, in H",
         hair::ParamRange::above(0));
   p.add("max_points_per_strand", params.max_points_per_strand,

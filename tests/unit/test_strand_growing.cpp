@@ -132,7 +132,7 @@ struct Scene {
   std::vector<Vec3> tip_ends;             ///< last points of the tip group's strands
 };
 
-Scene make_scene(bool with_root_types = true, double middle_inset = 0) {
+Scene make_scene(bool with_root_types = true, double middle_inset = 0, double gap = kGap) {
   Scene scene;
   GrowInput& input = scene.input;
   icosphere(4, input.body_vertices, input.body_triangles);  // 5120 triangles, edges ~7 mm
@@ -167,11 +167,11 @@ Scene make_scene(bool with_root_types = true, double middle_inset = 0) {
   // The middle and the tip, `middle_inset` nearer the vertical axis than the card's end.
   const Vec3 inset = -middle_inset * card_frame(kContinuedCard).out;
   for (const Vec3& end : scene.continued_rail_ends) {
-    polylines.push_back(straight_rail(end + inset - kGap * kUp, -kUp, kMiddleLength));
+    polylines.push_back(straight_rail(end + inset - gap * kUp, -kUp, kMiddleLength));
     strand_group.push_back(kMiddleGroup);
   }
   for (const Vec3& end : scene.continued_rail_ends) {
-    Vec3 start = end + inset - (2 * kGap + kMiddleLength) * kUp;
+    Vec3 start = end + inset - (gap + kGap + kMiddleLength) * kUp;
     polylines.push_back(straight_rail(start, -kUp, kTipLength));
     strand_group.push_back(kTipGroup);
     scene.tip_ends.push_back(start - kTipLength * kUp);
@@ -439,11 +439,150 @@ TEST_F(GrowOnSphere, StrandsUnderOtherCardsEndWithTheirCard) {
   EXPECT_GT(checked, 60);
 }
 
+// cluster-all's continued roots: a root-type group in a cluster that does not start at the
+// root carries no roots, and strands reach it across a gap wider than continue_radius_h.
+TEST(StrandGrowing, ContinuedRootGroupsCarryNoRootsAndAreReachedAcrossTheirGap) {
+  // The middle group typed root (as typeify types a piece with nothing within 0.08 H
+  // before it) 0.04 m (0.17 H) below card 0's ends; card 3's cluster (2) does not start
+  // at the root either.
+  Scene scene = make_scene(true, 0, 0.04);
+  scene.input.group_type[kMiddleGroup] = GroupType::root_connected;
+  scene.input.cluster_starts_at_root = {1, 0, 0};
+  GrowResult result = grow_strands(scene.input, params_with(kStrandCount));
+  const auto& cluster = int_attribute(result.strands, "cluster");
+  double tip_end_y = scene.tip_ends.front().y();
+  int64_t reaching = 0;
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+    EXPECT_EQ(cluster[static_cast<size_t>(s)], 0) << "strand " << s;
+    if (std::abs(last_of(result.strands, s).y() - tip_end_y) <= 0.01) ++reaching;
+  }
+  EXPECT_GT(reaching, 20);
+  EXPECT_EQ(result.clusters[2].strand_count, 0);
+  EXPECT_EQ(result.clusters[2].field_voxel_count, 0);
+
+  // The gap is beyond continue_radius_h (0.08 H = 0.019 m): with the continued roots'
+  // reach cut to it, no strand gets there.
+  GrowParams near = params_with(kStrandCount);
+  near.continued_root_radius_h = near.continue_radius_h;
+  GrowResult cut = grow_strands(scene.input, near);
+  for (int64_t s = 0; s < cut.strands.strand_count(); ++s)
+    EXPECT_GT(last_of(cut.strands, s).y(), tip_end_y + 0.05) << "strand " << s;
+}
+
+/// Height of `p` above the sphere.
+double height_above_sphere(const Vec3& p) { return (p - kCentre).norm() - kRadius; }
+
+// Layers: card 0 gets an outer layer, its rails copied 14 mm above the sphere (the inner
+// ones lie 4 mm above it), a group of its own in the same cluster. With layers, the
+// strands rooted under the card split between the two heights; without, the field from
+// the scalp keeps them all low.
+TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
+  Scene scene = make_scene();
+  GrowInput& input = scene.input;
+  const StrandSet& inner = input.input_strands;
+  const auto& group = std::get<std::vector<int32_t>>(inner.strand_attributes.at("group"));
+  std::vector<Points3f> polylines;
+  std::vector<int32_t> strand_group = group;
+  for (int64_t s = 0; s < inner.strand_count(); ++s) polylines.push_back(inner.strand(s));
+  const auto outer_group = static_cast<int32_t>(input.group_type.size());
+  constexpr double kOuterHeight = 0.014;
+  for (int64_t s = 0; s < inner.strand_count(); ++s) {
+    if (group[static_cast<size_t>(s)] != kContinuedCard) continue;
+    Points3f rail = inner.strand(s);
+    for (Eigen::Index i = 0; i < rail.rows(); ++i) {
+      Vec3 p = point_of(rail, i);
+      Vec3 out = kCentre + (p - kCentre) * (kRadius + kOuterHeight) / (p - kCentre).norm();
+      rail.row(i) = out.transpose().cast<float>();
+    }
+    polylines.push_back(rail);
+    strand_group.push_back(outer_group);
+  }
+  input.input_strands = strand_set_from_polylines(polylines);
+  input.input_strands.strand_attributes["group"] = strand_group;
+  input.group_type.push_back(GroupType::root_free);
+  input.group_cluster.push_back(input.group_cluster[kContinuedCard]);
+
+  // Share of the strands rooted under card 0 whose points over the card's middle (polar
+  // 50 to 80 degrees) lie above halfway between the layers, on average.
+  auto outer_share = [&](const GrowParams& params) {
+    GrowResult result = grow_strands(input, params);
+    int64_t under = 0, outer = 0;
+    for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+      if (!under_card(kContinuedCard, root_of(result.strands, s))) continue;
+      double sum = 0;
+      int count = 0;
+      for (int64_t row = result.strands.offsets[s]; row < result.strands.offsets[s + 1]; ++row) {
+        Vec3 p = point_of(result.strands.points, row);
+        double polar = polar_in_card(kContinuedCard, p);
+        if (polar < radians(50) || polar > radians(80)) continue;
+        sum += height_above_sphere(p);
+        ++count;
+      }
+      if (count == 0) continue;
+      ++under;
+      if (sum / count > 0.009) ++outer;
+    }
+    EXPECT_GT(under, 20);
+    return static_cast<double>(outer) / static_cast<double>(std::max<int64_t>(under, 1));
+  };
+  GrowParams layered = params_with(kStrandCount);
+  GrowParams flat = layered;
+  flat.layer_radius_h = 0;
+  double with_layers = outer_share(layered), without = outer_share(flat);
+  std::printf(
+      "[ grow     ] sphere, two layers over card 0: %.2f of its strands outer with "
+      "layers, %.2f without\n",
+      with_layers, without);
+  EXPECT_GT(with_layers, 0.25);
+  EXPECT_LT(with_layers, 0.75);
+  EXPECT_LT(without, 0.1);
+}
+
+// A strand that follows a group off its rails (rooted beside a card, it leaves the field
+// at the band's edge and goes on along the card's closest rail) drifts back to within
+// follow_keep_h of them.
+TEST(StrandGrowing, StrandsFollowingAGroupDriftBackToItsRails) {
+  Scene scene = make_scene();
+  const StrandSet& rails = scene.input.input_strands;
+  // Mean distance of the last point of every input_strand run to the nearest rail point.
+  auto mean_offset = [&](const GrowParams& params) {
+    GrowResult result = grow_strands(scene.input, params);
+    double sum = 0;
+    int64_t runs = 0;
+    for (int64_t s = 0; s < result.strands.strand_count(); ++s)
+      for (int64_t row = result.strands.offsets[s]; row < result.strands.offsets[s + 1]; ++row) {
+        bool run_end = result.point_rule[static_cast<size_t>(row)] == GrowRule::input_strand &&
+                       (row + 1 == result.strands.offsets[s + 1] ||
+                        result.point_rule[static_cast<size_t>(row + 1)] != GrowRule::input_strand);
+        if (!run_end) continue;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int64_t r = 0; r < rails.point_count(); ++r)
+          nearest = std::min(
+              nearest, (point_of(rails.points, r) - point_of(result.strands.points, row)).norm());
+        sum += nearest;
+        ++runs;
+      }
+    EXPECT_GT(runs, 20);
+    return sum / static_cast<double>(std::max<int64_t>(runs, 1));
+  };
+  GrowParams pulled = params_with(kStrandCount);
+  GrowParams kept = pulled;
+  kept.follow_pull = 0;
+  double with_pull = mean_offset(pulled), without = mean_offset(kept);
+  std::printf(
+      "[ grow     ] sphere: input-strand runs end %.2f mm from a rail with the pull, "
+      "%.2f mm without\n",
+      1e3 * with_pull, 1e3 * without);
+  EXPECT_LT(with_pull, 0.02 * kHeadHeight);
+  EXPECT_LT(with_pull, without);
+}
+
 TEST(StrandGrowing, StrandsAlongInputStrandsThroughTheBodyArePushedOut) {
-  // The middle group 2 cm nearer the axis: its first centimetres run up to 8 mm inside
+  // The middle group 1.7 cm nearer the axis: its first centimetres run about 6 mm inside
   // the sphere. Strands bridged to it and following it unchecked would go as deep; the
-  // body's signed distance keeps every point outside.
-  Scene scene = make_scene(/*with_root_types=*/true, /*middle_inset=*/0.02);
+  // body's signed distance keeps every point outside. (At 2 cm its start lies beyond
+  // continue_radius_h of the strands' ends, which keep the card's 4 mm off the sphere.)
+  Scene scene = make_scene(/*with_root_types=*/true, /*middle_inset=*/0.017);
   double deepest_input_m = 0;
   for (int64_t row = 0; row < scene.input.input_strands.point_count(); ++row)
     deepest_input_m =
