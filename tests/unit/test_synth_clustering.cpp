@@ -15,12 +15,12 @@
 
 #include "hair/adjusted_rand_index.h"
 #include "hair/extract.h"
-#include "hair/group_scalp_distance.h"
 #include "hair/hair_clustering.h"
 #include "hair/mesh_io.h"
 #include "hair/synth/synth_eval.h"
 #include "hair/synth/synth_model.h"
 #include "hair/typeify.h"
+#include "unit/clustered_in_memory.h"
 #include "unit/mean_column.h"
 
 namespace hair::synth {
@@ -188,17 +188,11 @@ TEST(SynthClustering, ContinuedRootsAgainstTheTruth) {
     std::array<std::array<int, 2>, 2> counts{};
     for (uint32_t seed : {1u, 2u, 3u}) {
       SynthModel model = generate_model(varied_spec(preset(name), seed), body, seed, 2);
-      ExtractResult extract = extract_strands(model.mesh, body, ExtractParams{}, name, "body");
-      double h = extract.head.head_height;
-      GroupTypes found =
-          group_types(extract.strands, extract.group_first_strand, h, TypeifyParams{});
-      MiddleClustering middle =
-          cluster_middle_groups(found.centre_strands, found.type, h, GraphClusteringParams{});
-      HairClustering clusters = cluster_hair(
-          found.centre_strands, found.type, middle.middle_cluster, h, HairClusteringParams{},
-          start_scalp_distances(found.centre_strands, extract.body_vertices, extract.body_triangles,
-                                extract.scalp_triangle));
-      std::vector<int32_t> patch_of = group_patches(model, extract);
+      hair::testing::ClusteredInMemory run =
+          hair::testing::cluster_in_memory(model.mesh, body, name);
+      const GroupTypes& found = run.types;
+      const HairClustering& clusters = run.clusters;
+      std::vector<int32_t> patch_of = group_patches(model, run.extract);
       for (size_t g = 0; g < found.type.size(); ++g) {
         bool root = found.type[g] == hair::GroupType::root_free ||
                     found.type[g] == hair::GroupType::root_connected;

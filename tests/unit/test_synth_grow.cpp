@@ -15,13 +15,13 @@
 #include <vector>
 
 #include "hair/extract.h"
-#include "hair/group_scalp_distance.h"
 #include "hair/hair_clustering.h"
 #include "hair/mesh_io.h"
 #include "hair/point_index.h"
 #include "hair/strand_growing.h"
 #include "hair/synth/synth_model.h"
 #include "hair/typeify.h"
+#include "unit/clustered_in_memory.h"
 #include "unit/mean_column.h"
 
 namespace hair::synth {
@@ -209,15 +209,11 @@ struct Grown {
 
 /// Extract, typeify, both clusterings and grow, in memory, as the stages chain them.
 Grown grow_model(const SynthModel& model, const PolyMesh& body, const std::string& name) {
-  ExtractResult extract = extract_strands(model.mesh, body, ExtractParams{}, name, "body");
-  double h = extract.head.head_height;
-  GroupTypes found = group_types(extract.strands, extract.group_first_strand, h, TypeifyParams{});
-  MiddleClustering middle =
-      cluster_middle_groups(found.centre_strands, found.type, h, GraphClusteringParams{});
-  HairClustering clusters = cluster_hair(
-      found.centre_strands, found.type, middle.middle_cluster, h, HairClusteringParams{},
-      start_scalp_distances(found.centre_strands, extract.body_vertices, extract.body_triangles,
-                            extract.scalp_triangle));
+  hair::testing::ClusteredInMemory run = hair::testing::cluster_in_memory(model.mesh, body, name);
+  ExtractResult& extract = run.extract;
+  const double h = run.head_height_m;
+  const GroupTypes& found = run.types;
+  const HairClustering& clusters = run.clusters;
   GrowInput input;
   input.input_strands = std::move(extract.strands);
   input.group_type = found.type;

@@ -1,0 +1,40 @@
+#pragma once
+
+// Extract, typeify and both clusterings of a hair mesh in memory with the default
+// parameters, as the stages chain them: the start of the synthetic-truth tests.
+
+#include <string>
+
+#include "hair/extract.h"
+#include "hair/group_scalp_distance.h"
+#include "hair/hair_clustering.h"
+#include "hair/typeify.h"
+
+namespace hair::testing {
+
+struct ClusteredInMemory {
+  ExtractResult extract;
+  GroupTypes types;  ///< with start_scalp_distance_m, as typeify writes it
+  MiddleClustering middle;
+  HairClustering clusters;
+  double head_height_m = 0;
+};
+
+inline ClusteredInMemory cluster_in_memory(const PolyMesh& mesh, const PolyMesh& body,
+                                           const std::string& name) {
+  ClusteredInMemory run;
+  run.extract = extract_strands(mesh, body, ExtractParams{}, name, "body");
+  run.head_height_m = run.extract.head.head_height;
+  const double h = run.head_height_m;
+  run.types = group_types(run.extract.strands, run.extract.group_first_strand, h, TypeifyParams{});
+  run.types.start_scalp_distance_m =
+      start_scalp_distances(run.types.centre_strands, run.extract.body_vertices,
+                            run.extract.body_triangles, run.extract.scalp_triangle);
+  run.middle =
+      cluster_middle_groups(run.types.centre_strands, run.types.type, h, GraphClusteringParams{});
+  run.clusters = cluster_hair(run.types.centre_strands, run.types.type, run.middle.middle_cluster,
+                              h, HairClusteringParams{}, run.types.start_scalp_distance_m);
+  return run;
+}
+
+}  // namespace hair::testing
