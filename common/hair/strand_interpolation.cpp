@@ -9,6 +9,7 @@
 #include "hair/barycentric.h"
 #include "hair/error.h"
 #include "hair/hair_style.h"
+#include "hair/interpolation_kernel.h"
 #include "hair/point_index.h"
 
 namespace hair {
@@ -22,6 +23,7 @@ constexpr int kRecord = 12;
 /// padded to 4 floats, then the same four for the step to the next particle (zero after the
 /// last), so that a point is a few 4-wide SIMD multiply-adds per guide.
 constexpr int kColumns = 8;
+static_assert(kColumns * 4 == kParticleFloats);
 using Column = Eigen::Array4f;
 
 void check_params(const InterpolationParams& p) {
@@ -423,37 +425,21 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     } else if (interpolated < bound) {
       // Interpolated: sum_g w_g (G_g(u) + F_g(u) d).
       int guide_count = 0;
-      const Column* guide_table[3];
+      const float* guide_table[3];
       float segments[3], weight[3];
       for (size_t k = 0; k < 3; ++k) {
         int32_t g = binding.guides[si][k];
         if (g < 0) continue;
         int64_t first = binding.guide_offsets[static_cast<size_t>(g)];
-        guide_table[guide_count] = table.data() + first * kColumns;
+        guide_table[guide_count] = table.data()->data() + first * kParticleFloats;
         segments[guide_count] =
             static_cast<float>(binding.guide_offsets[static_cast<size_t>(g) + 1] - first - 1);
         weight[guide_count] = binding.weights[si][k];
         ++guide_count;
       }
-      for (int64_t row = interpolated; row < bound; ++row) {
-        const float u = binding.parameter[static_cast<size_t>(row)];
-        const float* d = offset + 3 * row;
-        Column sum = Column::Zero();
-        for (int k = 0; k < guide_count; ++k) {
-          float position = u * segments[k];
-          int particle = std::min(static_cast<int>(position), static_cast<int>(segments[k]) - 1);
-          float f = position - static_cast<float>(particle);
-          const Column* a = guide_table[k] + particle * kColumns;
-          Column p = a[0] + f * a[4];
-          p += (a[1] + f * a[5]) * d[0];
-          p += (a[2] + f * a[6]) * d[1];
-          p += (a[3] + f * a[7]) * d[2];
-          sum += weight[k] * p;
-        }
-        out[3 * row] = sum[0];
-        out[3 * row + 1] = sum[1];
-        out[3 * row + 2] = sum[2];
-      }
+      interpolate_strand_points(guide_table, segments, weight, guide_count,
+                                binding.parameter.data() + interpolated, offset + 3 * interpolated,
+                                bound - interpolated, out + 3 * interpolated);
     }
     // Bound: origin + R_tet local.
     for (int64_t row = bound; row < end; ++row) {

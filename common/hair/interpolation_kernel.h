@@ -1,0 +1,40 @@
+#pragma once
+// The innermost loop of interpolate_frame(): the points of one strand from up to three
+// guides, sum_g w_g (G_g(u) + F_g(u) d), over the per-frame table of guide particles.
+// An AVX2 + FMA version is chosen at run time where the processor has them (the build
+// targets plain x86-64); both compute the same sums, rounded differently (FMA), so frames
+// agree to float rounding across machines and bit for bit on one machine.
+
+#include <cstdint>
+
+namespace hair {
+
+/// Floats per guide particle in the table: position, the frame's three columns, then the
+/// steps of those four to the next particle, each 4 floats (xyz and a pad).
+inline constexpr int kParticleFloats = 32;
+
+/// One strand's interpolated points.
+///
+/// @param guide_table  per used guide, its first particle's record in the table
+/// @param segments     per used guide, its particle count - 1 (at least 1)
+/// @param weight       per used guide
+/// @param guide_count  1 to 3
+/// @param parameter    per point: arc parameter u in [0, 1]
+/// @param offset       per point: rest offset d, 3 floats
+/// @param count        points
+/// @param out          per point: 3 floats
+void interpolate_strand_points(const float* const* guide_table, const float* segments,
+                               const float* weight, int guide_count, const float* parameter,
+                               const float* offset, int64_t count, float* out);
+
+/// The portable version, which interpolate_strand_points() runs without AVX2 + FMA (for
+/// tests that compare the two).
+void interpolate_strand_points_portable(const float* const* guide_table, const float* segments,
+                                        const float* weight, int guide_count,
+                                        const float* parameter, const float* offset, int64_t count,
+                                        float* out);
+
+/// Whether interpolate_strand_points() runs its AVX2 + FMA version on this machine.
+bool interpolation_uses_avx2();
+
+}  // namespace hair
