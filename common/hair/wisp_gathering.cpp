@@ -161,8 +161,37 @@ std::vector<Vec3> gather_wisp(const StrandSet& strands, WispPlan& wisp, double s
   std::vector<Vec3> centre =
       gather_bundle(strands, core, step_m, gather_radius_m, body, clearance_m);
   if (centre.empty()) return {};
+  // Members that end inside the bundle part-way (strands that run into a braid and stop in
+  // it) belong to the wisp too, from where their run last comes within reach of the centre
+  // strand, hanging from the point before.
+  auto near_centre = [&](const Vec3& p) {
+    for (size_t k = 0; k + 1 < centre.size(); ++k) {
+      Vec3 ab = centre[k + 1] - centre[k];
+      double t = std::clamp((p - centre[k]).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+      if ((centre[k] + t * ab - p).norm() <= reach) return true;
+    }
+    return false;
+  };
+  std::vector<GuideStrand> still_outside;
+  for (size_t m = 0, o = 0; m < tip.size(); ++m) {
+    if (in[m]) continue;
+    const GuideStrand& guide = outside[o++];
+    int64_t base = strands.offsets[static_cast<size_t>(wisp.member_strand[m])];
+    int64_t first = wisp.member_end_point[m] - 1;
+    if (!near_centre(point_of(strands.points, base + first))) {
+      still_outside.push_back(guide);
+      continue;
+    }
+    while (first > wisp.member_first_point[m] &&
+           near_centre(point_of(strands.points, base + first - 1)))
+      --first;
+    core.member_strand.push_back(wisp.member_strand[m]);
+    core.member_first_point.push_back(first);
+    core.member_end_point.push_back(wisp.member_end_point[m]);
+    core.anchor_m.push_back(point_of(strands.points, base + std::max<int64_t>(0, first - 1)));
+  }
   wisp = std::move(core);
-  loose = std::move(outside);
+  loose = std::move(still_outside);
   return centre;
 }
 

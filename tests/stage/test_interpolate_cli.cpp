@@ -115,9 +115,11 @@ TEST_F(InterpolateCli, AtRestTheStrandsAreTheGrownOnes) {
     const auto& method = std::get<std::vector<int32_t>>(frames.rest.strand_attributes.at("method"));
     int64_t by_method[4] = {0, 0, 0, 0};
     for (int32_t value : method) ++by_method[value];
-    EXPECT_GT(by_method[1], 0) << name << ": no barycentric strand";
     if (std::string(name) == "braid01") {
+      // Every moving strand of braid01 runs into its braid: all braided, none from guides.
       EXPECT_GT(by_method[3], 400) << "braided strands";
+    } else {
+      EXPECT_GT(by_method[1], 0) << name << ": no barycentric strand";
     }
     auto held = hair::h5::read_vector<int64_t>(file, "/strands/held_count");
     int64_t hanging = 0;

@@ -72,6 +72,41 @@ TEST(WispGathering, TheBraidIsAWispAndTheStrayIsLeftOut) {
   EXPECT_NEAR(centre.back().y(), -0.2, 0.01);
 }
 
+TEST(WispGathering, AStrandThatEndsPartWayDownTheBraidJoinsTheWisp) {
+  // The braid of the test above, and a fourth strand that comes in from the side and
+  // runs down the braid's axis to y = -0.1, half way: it ends within the bundle, not at
+  // its tip, so it joins the wisp where it comes near the centre strand.
+  std::vector<std::vector<Vec3>> polylines;
+  for (int s = 0; s < 3; ++s) {
+    std::vector<Vec3> strand;
+    for (int i = 0; i <= 40; ++i) {
+      double y = -0.005 * i, angle = 2 * std::numbers::pi * (s / 3.0 + y / 0.05);
+      strand.emplace_back(0.2 + 0.008 * std::cos(angle), y, 0.008 * std::sin(angle));
+    }
+    polylines.push_back(strand);
+  }
+  std::vector<Vec3> joining;
+  for (int i = 0; i <= 10; ++i) joining.emplace_back(0.3 - 0.01 * i, -0.005 * i, 0.0);
+  for (int i = 1; i <= 10; ++i) joining.emplace_back(0.2, -0.05 - 0.005 * i, 0.0);
+  polylines.push_back(joining);
+  StrandSet strands = strands_of(polylines);
+  GuidePlan plan = plan_guides(strands, {static_cast<int8_t>(HairStyle::braided)}, 10);
+  ASSERT_EQ(plan.wisps.size(), 1u);
+  WispPlan wisp = plan.wisps[0];
+  std::vector<GuideStrand> loose;
+  std::vector<Vec3> centre = gather_wisp(strands, wisp, 0.02, 0.015, sphere_field(), 0.001, loose);
+  ASSERT_GE(centre.size(), 5u);
+  EXPECT_TRUE(loose.empty());
+  ASSERT_EQ(wisp.member_strand.size(), 4u);
+  EXPECT_EQ(wisp.member_strand[3], 3);
+  // It enters where it comes within twice the radius of the axis (x <= 0.23), not at its
+  // root, and hangs from the point before.
+  int64_t first = wisp.member_first_point[3];
+  EXPECT_GT(first, 5);
+  EXPECT_LE(joining[static_cast<size_t>(first)].x(), 0.2 + 0.03 + 1e-9);
+  EXPECT_GT(joining[static_cast<size_t>(first - 1)].x(), 0.2 + 0.03 - 0.011);
+}
+
 TEST(WispGathering, ACapThatEndsAllRoundTheHeadIsNoWisp) {
   // Strands over the sphere from its crown down to its equator, all round it.
   std::vector<std::vector<Vec3>> polylines;
