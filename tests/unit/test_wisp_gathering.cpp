@@ -37,8 +37,8 @@ BodySdf sphere_field() {
                  0.005, 0.03, "sphere");
 }
 
-TEST(WispGathering, TheBraidIsAWispAndTheStrayIsLeftOut) {
-  // Three strands twisted about the vertical line x = 0.2, z = 0, from y = 0 to -0.2.
+/// Three strands twisted about the vertical line x = 0.2, z = 0, from y = 0 to -0.2.
+std::vector<std::vector<Vec3>> three_strand_braid() {
   std::vector<std::vector<Vec3>> polylines;
   for (int s = 0; s < 3; ++s) {
     std::vector<Vec3> strand;
@@ -48,6 +48,11 @@ TEST(WispGathering, TheBraidIsAWispAndTheStrayIsLeftOut) {
     }
     polylines.push_back(strand);
   }
+  return polylines;
+}
+
+TEST(WispGathering, TheBraidIsAWispAndTheStrayIsLeftOut) {
+  std::vector<std::vector<Vec3>> polylines = three_strand_braid();
   // A stray from the same place that ends 0.3 m away.
   std::vector<Vec3> stray;
   for (int i = 0; i <= 40; ++i) stray.emplace_back(0.2 + 0.0075 * i, -0.002 * i, 0.0);
@@ -76,15 +81,7 @@ TEST(WispGathering, AStrandThatEndsPartWayDownTheBraidJoinsTheWisp) {
   // The braid of the test above, and a fourth strand that comes in from the side and
   // runs down the braid's axis to y = -0.1, half way: it ends within the bundle, not at
   // its tip, so it joins the wisp where it comes near the centre strand.
-  std::vector<std::vector<Vec3>> polylines;
-  for (int s = 0; s < 3; ++s) {
-    std::vector<Vec3> strand;
-    for (int i = 0; i <= 40; ++i) {
-      double y = -0.005 * i, angle = 2 * std::numbers::pi * (s / 3.0 + y / 0.05);
-      strand.emplace_back(0.2 + 0.008 * std::cos(angle), y, 0.008 * std::sin(angle));
-    }
-    polylines.push_back(strand);
-  }
+  std::vector<std::vector<Vec3>> polylines = three_strand_braid();
   std::vector<Vec3> joining;
   for (int i = 0; i <= 10; ++i) joining.emplace_back(0.3 - 0.01 * i, -0.005 * i, 0.0);
   for (int i = 1; i <= 10; ++i) joining.emplace_back(0.2, -0.05 - 0.005 * i, 0.0);
