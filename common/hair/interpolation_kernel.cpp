@@ -1,6 +1,7 @@
 #include "hair/interpolation_kernel.h"
 
 #include <algorithm>
+#include <cmath>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -43,37 +44,160 @@ void interpolate_strand_points_portable(const float* const* guide_table, const f
   }
 }
 
+void transform_points_portable(const float* frames, const int32_t* frame_index, const float* local,
+                               int64_t count, float* out) {
+  for (int64_t i = 0; i < count; ++i) {
+    const float* f =
+        frames + (frame_index ? static_cast<int64_t>(frame_index[i]) : 0) * kFrameFloats;
+    const float* p = local + 3 * i;
+    for (int r = 0; r < 3; ++r)
+      out[3 * i + r] = f[r] + f[4 + r] * p[0] + f[8 + r] * p[1] + f[12 + r] * p[2];
+  }
+}
+
 namespace {
 
 #ifdef HAIR_HAVE_AVX2_KERNEL
 // Two columns per 8-float register: [position | column 0] and [column 1 | column 2], and
-// the same of the steps; c01 = [1 | d0], c23 = [d1 | d2] broadcast per half, so a guide
-// costs four fused multiply-adds and one more for the fraction.
-__attribute__((target("avx2,fma"))) void interpolate_avx2(
-    const float* const* guide_table, const float* segments, const float* weight, int guide_count,
+// the same of the steps; c01 = [1 | d0] and c23 = [d1 | d2] per point. Two versions:
+//  - per point: each guide's record at the point's fraction f (two fused multiply-adds)
+//    weighted into two sums (two more), then c01 and c23 applied (a multiply and a fused
+//    multiply-add) and the halves added;
+//  - in runs: between two particles of every guide, the weighted sum is linear in u:
+//    sum_g w_g (A_g + f_g B_g) with f_g = u S_g - j_g is P + u Q, P = sum_g w_g (A_g - j_g
+//    B_g), Q = sum_g w_g S_g B_g. P and Q once per run of points whose particles j_g are
+//    the same for every guide (a strand's parameters rise along it), then per point two
+//    fused multiply-adds for P + u Q before c01 and c23. A point outside the run's
+//    interval starts a new run, so any order of parameters is right; rising ones are fast.
+// The runs pay where a strand has more points than its guides have segments together
+// (interpolate_strand_points() chooses); the guide count is a template parameter, so the
+// guide loop unrolls.
+
+/// The point's three floats from the folded sum; four floats where the fourth is the next
+/// point's x, written over on the next turn.
+__attribute__((target("avx2,fma"))) inline void store_point(__m256 sum, bool last, float* out) {
+  const __m128 folded = _mm_add_ps(_mm256_castps256_ps128(sum), _mm256_extractf128_ps(sum, 1));
+  if (!last) {
+    _mm_storeu_ps(out, folded);
+    return;
+  }
+  alignas(16) float xyzw[4];
+  _mm_store_ps(xyzw, folded);
+  out[0] = xyzw[0];
+  out[1] = xyzw[1];
+  out[2] = xyzw[2];
+}
+
+template <int kGuides>
+__attribute__((target("avx2,fma"))) void interpolate_avx2_per_point(
+    const float* const* guide_table, const float* segments, const float* weight,
     const float* parameter, const float* offset, int64_t count, float* out) {
+  const __m256 ones = _mm256_set1_ps(1);
+  __m256 weight_k[kGuides];
+  int last[kGuides];
+  for (int k = 0; k < kGuides; ++k) {
+    weight_k[k] = _mm256_set1_ps(weight[k]);
+    last[k] = static_cast<int>(segments[k]) - 1;
+  }
   for (int64_t i = 0; i < count; ++i) {
     const float u = parameter[i];
-    const float* d = offset + 3 * i;
-    const __m256 c01 = _mm256_setr_ps(1, 1, 1, 1, d[0], d[0], d[0], d[0]);
-    const __m256 c23 = _mm256_setr_ps(d[1], d[1], d[1], d[1], d[2], d[2], d[2], d[2]);
-    __m256 sum = _mm256_setzero_ps();
-    for (int k = 0; k < guide_count; ++k) {
-      float f = 0;
-      const float* a = particle_at(guide_table[k], segments[k], u, f);
-      __m256 at =
-          _mm256_fmadd_ps(c01, _mm256_loadu_ps(a), _mm256_mul_ps(c23, _mm256_loadu_ps(a + 8)));
-      __m256 step = _mm256_fmadd_ps(c01, _mm256_loadu_ps(a + 16),
-                                    _mm256_mul_ps(c23, _mm256_loadu_ps(a + 24)));
-      __m256 p = _mm256_fmadd_ps(_mm256_set1_ps(f), step, at);
-      sum = _mm256_fmadd_ps(_mm256_set1_ps(weight[k]), p, sum);
+    __m256 sum01 = _mm256_setzero_ps(), sum23 = _mm256_setzero_ps();
+    for (int k = 0; k < kGuides; ++k) {
+      const float position = u * segments[k];
+      const int j = std::min(static_cast<int>(position), last[k]);
+      const __m256 f = _mm256_set1_ps(position - static_cast<float>(j));
+      const float* a = guide_table[k] + static_cast<int64_t>(j) * kParticleFloats;
+      sum01 = _mm256_fmadd_ps(
+          weight_k[k], _mm256_fmadd_ps(f, _mm256_loadu_ps(a + 16), _mm256_loadu_ps(a)), sum01);
+      sum23 = _mm256_fmadd_ps(
+          weight_k[k], _mm256_fmadd_ps(f, _mm256_loadu_ps(a + 24), _mm256_loadu_ps(a + 8)), sum23);
     }
-    __m128 folded = _mm_add_ps(_mm256_castps256_ps128(sum), _mm256_extractf128_ps(sum, 1));
-    alignas(16) float xyzw[4];
-    _mm_store_ps(xyzw, folded);
-    out[3 * i] = xyzw[0];
-    out[3 * i + 1] = xyzw[1];
-    out[3 * i + 2] = xyzw[2];
+    const float* d = offset + 3 * i;
+    const __m256 c01 = _mm256_blend_ps(ones, _mm256_broadcast_ss(d), 0xF0);
+    const __m256 c23 =
+        _mm256_blend_ps(_mm256_broadcast_ss(d + 1), _mm256_broadcast_ss(d + 2), 0xF0);
+    store_point(_mm256_fmadd_ps(c01, sum01, _mm256_mul_ps(c23, sum23)), i + 1 == count,
+                out + 3 * i);
+  }
+}
+
+template <int kGuides>
+__attribute__((target("avx2,fma"))) void interpolate_avx2_runs(
+    const float* const* guide_table, const float* segments, const float* weight,
+    const float* parameter, const float* offset, int64_t count, float* out) {
+  const __m256 ones = _mm256_set1_ps(1);
+  int last[kGuides];
+  for (int k = 0; k < kGuides; ++k) last[k] = static_cast<int>(segments[k]) - 1;
+  // The current run: u in [low, high), and its P and Q.
+  float low = 1, high = 0;
+  __m256 p01 = _mm256_setzero_ps(), p23 = p01, q01 = p01, q23 = p01;
+  for (int64_t i = 0; i < count; ++i) {
+    const float u = parameter[i];
+    if (!(u >= low && u < high)) {
+      low = -INFINITY;
+      high = INFINITY;
+      p01 = p23 = q01 = q23 = _mm256_setzero_ps();
+      for (int k = 0; k < kGuides; ++k) {
+        const int j = std::min(static_cast<int>(u * segments[k]), last[k]);
+        if (j > 0) low = std::max(low, static_cast<float>(j) / segments[k]);
+        if (j < last[k]) high = std::min(high, static_cast<float>(j + 1) / segments[k]);
+        const float* a = guide_table[k] + static_cast<int64_t>(j) * kParticleFloats;
+        const __m256 b01 = _mm256_loadu_ps(a + 16), b23 = _mm256_loadu_ps(a + 24);
+        const __m256 j_k = _mm256_set1_ps(static_cast<float>(j));
+        const __m256 w_k = _mm256_set1_ps(weight[k]);
+        const __m256 ws_k = _mm256_set1_ps(weight[k] * segments[k]);
+        p01 = _mm256_fmadd_ps(w_k, _mm256_fnmadd_ps(j_k, b01, _mm256_loadu_ps(a)), p01);
+        p23 = _mm256_fmadd_ps(w_k, _mm256_fnmadd_ps(j_k, b23, _mm256_loadu_ps(a + 8)), p23);
+        q01 = _mm256_fmadd_ps(ws_k, b01, q01);
+        q23 = _mm256_fmadd_ps(ws_k, b23, q23);
+      }
+    }
+    const __m256 uu = _mm256_set1_ps(u);
+    const float* d = offset + 3 * i;
+    const __m256 c01 = _mm256_blend_ps(ones, _mm256_broadcast_ss(d), 0xF0);
+    const __m256 c23 =
+        _mm256_blend_ps(_mm256_broadcast_ss(d + 1), _mm256_broadcast_ss(d + 2), 0xF0);
+    store_point(_mm256_fmadd_ps(c01, _mm256_fmadd_ps(uu, q01, p01),
+                                _mm256_mul_ps(c23, _mm256_fmadd_ps(uu, q23, p23))),
+                i + 1 == count, out + 3 * i);
+  }
+}
+
+template <int kGuides>
+void interpolate_avx2(const float* const* guide_table, const float* segments, const float* weight,
+                      const float* parameter, const float* offset, int64_t count, float* out) {
+  float all_segments = 0;
+  for (int k = 0; k < kGuides; ++k) all_segments += segments[k];
+  if (static_cast<float>(count) >= all_segments)
+    interpolate_avx2_runs<kGuides>(guide_table, segments, weight, parameter, offset, count, out);
+  else
+    interpolate_avx2_per_point<kGuides>(guide_table, segments, weight, parameter, offset, count,
+                                        out);
+}
+
+// The frame as [origin | column 0] and [column 1 | column 2], applied to c01 = [1 | p0] and
+// c23 = [p1 | p2] (a multiply and a fused multiply-add) and the halves added.
+__attribute__((target("avx2,fma"))) void transform_avx2(const float* frames,
+                                                        const int32_t* frame_index,
+                                                        const float* local, int64_t count,
+                                                        float* out) {
+  if (count <= 0) return;  // `frames` may be empty then
+  const __m256 ones = _mm256_set1_ps(1);
+  int32_t current = frame_index ? frame_index[0] : 0;
+  const float* first = frames + static_cast<int64_t>(current) * kFrameFloats;
+  __m256 f01 = _mm256_loadu_ps(first), f23 = _mm256_loadu_ps(first + 8);
+  for (int64_t i = 0; i < count; ++i) {
+    if (frame_index && frame_index[i] != current) {
+      current = frame_index[i];
+      const float* f = frames + static_cast<int64_t>(current) * kFrameFloats;
+      f01 = _mm256_loadu_ps(f);
+      f23 = _mm256_loadu_ps(f + 8);
+    }
+    const float* p = local + 3 * i;
+    const __m256 c01 = _mm256_blend_ps(ones, _mm256_broadcast_ss(p), 0xF0);
+    const __m256 c23 =
+        _mm256_blend_ps(_mm256_broadcast_ss(p + 1), _mm256_broadcast_ss(p + 2), 0xF0);
+    store_point(_mm256_fmadd_ps(c01, f01, _mm256_mul_ps(c23, f23)), i + 1 == count, out + 3 * i);
   }
 }
 
@@ -98,12 +222,27 @@ void interpolate_strand_points(const float* const* guide_table, const float* seg
                                const float* weight, int guide_count, const float* parameter,
                                const float* offset, int64_t count, float* out) {
 #ifdef HAIR_HAVE_AVX2_KERNEL
-  if (interpolation_uses_avx2())
-    return interpolate_avx2(guide_table, segments, weight, guide_count, parameter, offset, count,
-                            out);
+  if (interpolation_uses_avx2()) switch (guide_count) {
+      case 1:
+        return interpolate_avx2<1>(guide_table, segments, weight, parameter, offset, count, out);
+      case 2:
+        return interpolate_avx2<2>(guide_table, segments, weight, parameter, offset, count, out);
+      case 3:
+        return interpolate_avx2<3>(guide_table, segments, weight, parameter, offset, count, out);
+      default:
+        break;
+    }
 #endif
   interpolate_strand_points_portable(guide_table, segments, weight, guide_count, parameter, offset,
                                      count, out);
+}
+
+void transform_points(const float* frames, const int32_t* frame_index, const float* local,
+                      int64_t count, float* out) {
+#ifdef HAIR_HAVE_AVX2_KERNEL
+  if (interpolation_uses_avx2()) return transform_avx2(frames, frame_index, local, count, out);
+#endif
+  transform_points_portable(frames, frame_index, local, count, out);
 }
 
 }  // namespace hair

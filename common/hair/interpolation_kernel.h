@@ -34,7 +34,28 @@ void interpolate_strand_points_portable(const float* const* guide_table, const f
                                         const float* parameter, const float* offset, int64_t count,
                                         float* out);
 
-/// Whether interpolate_strand_points() runs its AVX2 + FMA version on this machine.
+/// Floats per rigid frame in the table of transform_points(): origin, then the three columns
+/// of the rotation, each 4 floats (xyz and a pad).
+inline constexpr int kFrameFloats = 16;
+
+/// Points carried by rigid frames: out_i = o + R p_i for the frame `frame_index[i]` of
+/// `frames` (the head, a wisp tetrahedron), or frame 0 for every point where
+/// `frame_index` is null. Consecutive points of the same frame reuse it.
+///
+/// @param frames       per frame: kFrameFloats floats
+/// @param frame_index  per point, or null
+/// @param local        per point: its position in its frame, 3 floats
+/// @param count        points
+/// @param out          per point: 3 floats
+void transform_points(const float* frames, const int32_t* frame_index, const float* local,
+                      int64_t count, float* out);
+
+/// The portable version of transform_points().
+void transform_points_portable(const float* frames, const int32_t* frame_index, const float* local,
+                               int64_t count, float* out);
+
+/// Whether interpolate_strand_points() and transform_points() run their AVX2 + FMA
+/// versions on this machine.
 bool interpolation_uses_avx2();
 
 }  // namespace hair

@@ -389,8 +389,23 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) out[kRecord + 3 + 3 * r + c] = delta(r, c);
   }
+  // The same frames for transform_points(): the wisp tetrahedra, and the head.
+  std::vector<float> tetrahedron_frames(static_cast<size_t>(binding.tetrahedron_count) *
+                                        kFrameFloats);
+  for (int64_t t = 0; t < binding.tetrahedron_count; ++t) {
+    const float* in = tetrahedra.data() + t * 2 * kRecord;
+    float* frame_out = tetrahedron_frames.data() + t * kFrameFloats;
+    for (int axis = 0; axis < 3; ++axis) frame_out[axis] = in[axis];
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) frame_out[4 + 4 * c + r] = in[3 + 3 * r + c];
+  }
   const Eigen::Matrix3f head = frame.head.rotation.normalized().toRotationMatrix().cast<float>();
   const Eigen::Vector3f head_t = frame.head.translation_m.cast<float>();
+  float head_frame[kFrameFloats] = {};
+  for (int r = 0; r < 3; ++r) {
+    head_frame[r] = head_t[r];
+    for (int c = 0; c < 3; ++c) head_frame[4 + 4 * c + r] = head(r, c);
+  }
   const float* offset = binding.offset_m.data();
   float* out = points_m.data();
 
@@ -402,11 +417,8 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     const int64_t interpolated = begin + binding.interpolated_from[si];
     const int64_t bound = begin + binding.bound_from[si];
     // Held: R p + t.
-    for (int64_t row = begin; row < interpolated; ++row) {
-      const float* p = offset + 3 * row;
-      for (int r = 0; r < 3; ++r)
-        out[3 * row + r] = head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
-    }
+    transform_points(head_frame, nullptr, offset + 3 * begin, interpolated - begin,
+                     out + 3 * begin);
     // Bridged: (1 - s) (R p + t) + s (D p + c) for the tetrahedron's D, c.
     if (binding.bridged[si]) {
       for (int64_t row = interpolated; row < bound; ++row) {
@@ -442,15 +454,8 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
                                 bound - interpolated, out + 3 * interpolated);
     }
     // Bound: origin + R_tet local.
-    for (int64_t row = bound; row < end; ++row) {
-      const float* t =
-          tetrahedra.data() +
-          static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * 2 * kRecord;
-      const float* local = offset + 3 * row;
-      for (int r = 0; r < 3; ++r)
-        out[3 * row + r] =
-            t[r] + t[3 + 3 * r] * local[0] + t[4 + 3 * r] * local[1] + t[5 + 3 * r] * local[2];
-    }
+    transform_points(tetrahedron_frames.data(), binding.tetrahedron.data() + bound,
+                     offset + 3 * bound, end - bound, out + 3 * bound);
   }
 }
 
