@@ -11,11 +11,9 @@
 namespace hair {
 namespace {
 
-/// The particle record and the fraction past it at arc parameter u of a guide.
-inline const float* particle_at(const float* table, float segments, float u, float& fraction) {
-  float position = u * segments;
-  int particle = std::min(static_cast<int>(position), static_cast<int>(segments) - 1);
-  fraction = position - static_cast<float>(particle);
+/// The record of the particle that starts the segment of a guide at arc parameter u.
+inline const float* particle_at(const float* table, float segments, float u) {
+  int particle = std::min(static_cast<int>(u * segments), static_cast<int>(segments) - 1);
   return table + static_cast<int64_t>(particle) * kParticleFloats;
 }
 
@@ -30,13 +28,12 @@ void interpolate_strand_points_portable(const float* const* guide_table, const f
     const float* d = offset + 3 * i;
     float sum[3] = {0, 0, 0};
     for (int k = 0; k < guide_count; ++k) {
-      float f = 0;
-      const float* a = particle_at(guide_table[k], segments[k], u, f);
+      const float* a = particle_at(guide_table[k], segments[k], u);
       for (int r = 0; r < 3; ++r) {
-        float p = a[r] + f * a[16 + r];
-        p += (a[4 + r] + f * a[20 + r]) * d[0];
-        p += (a[8 + r] + f * a[24 + r]) * d[1];
-        p += (a[12 + r] + f * a[28 + r]) * d[2];
+        float p = a[r] + u * a[16 + r];
+        p += (a[4 + r] + u * a[20 + r]) * d[0];
+        p += (a[8 + r] + u * a[24 + r]) * d[1];
+        p += (a[12 + r] + u * a[28 + r]) * d[2];
         sum[r] += weight[k] * p;
       }
     }
@@ -59,16 +56,16 @@ namespace {
 
 #ifdef HAIR_HAVE_AVX2_KERNEL
 // Two columns per 8-float register: [position | column 0] and [column 1 | column 2], and
-// the same of the steps; c01 = [1 | d0] and c23 = [d1 | d2] per point. Two versions:
-//  - per point: each guide's record at the point's fraction f (two fused multiply-adds)
+// the same of the Q half of the record; c01 = [1 | d0] and c23 = [d1 | d2] per point. Two
+// versions:
+//  - per point: each guide's P + u Q at the point's particle (two fused multiply-adds),
 //    weighted into two sums (two more), then c01 and c23 applied (a multiply and a fused
 //    multiply-add) and the halves added;
-//  - in runs: between two particles of every guide, the weighted sum is linear in u:
-//    sum_g w_g (A_g + f_g B_g) with f_g = u S_g - j_g is P + u Q, P = sum_g w_g (A_g - j_g
-//    B_g), Q = sum_g w_g S_g B_g. P and Q once per run of points whose particles j_g are
-//    the same for every guide (a strand's parameters rise along it), then per point two
-//    fused multiply-adds for P + u Q before c01 and c23. A point outside the run's
-//    interval starts a new run, so any order of parameters is right; rising ones are fast.
+//  - in runs: while the particles j_g of every guide stay the same, sum_g w_g (P_g + u Q_g)
+//    is P + u Q with P = sum_g w_g P_g and Q = sum_g w_g Q_g, summed once per run of
+//    points (a strand's parameters rise along it), then per point two fused
+//    multiply-adds for P + u Q before c01 and c23. A point outside the run's interval
+//    starts a new run, so any order of parameters is right; rising ones are fast.
 // The runs pay where a strand has more points than its guides have segments together
 // (interpolate_strand_points() chooses); the guide count is a template parameter, so the
 // guide loop unrolls.
@@ -102,15 +99,14 @@ __attribute__((target("avx2,fma"))) void interpolate_avx2_per_point(
   for (int64_t i = 0; i < count; ++i) {
     const float u = parameter[i];
     __m256 sum01 = _mm256_setzero_ps(), sum23 = _mm256_setzero_ps();
+    const __m256 uu = _mm256_set1_ps(u);
     for (int k = 0; k < kGuides; ++k) {
-      const float position = u * segments[k];
-      const int j = std::min(static_cast<int>(position), last[k]);
-      const __m256 f = _mm256_set1_ps(position - static_cast<float>(j));
+      const int j = std::min(static_cast<int>(u * segments[k]), last[k]);
       const float* a = guide_table[k] + static_cast<int64_t>(j) * kParticleFloats;
       sum01 = _mm256_fmadd_ps(
-          weight_k[k], _mm256_fmadd_ps(f, _mm256_loadu_ps(a + 16), _mm256_loadu_ps(a)), sum01);
+          weight_k[k], _mm256_fmadd_ps(uu, _mm256_loadu_ps(a + 16), _mm256_loadu_ps(a)), sum01);
       sum23 = _mm256_fmadd_ps(
-          weight_k[k], _mm256_fmadd_ps(f, _mm256_loadu_ps(a + 24), _mm256_loadu_ps(a + 8)), sum23);
+          weight_k[k], _mm256_fmadd_ps(uu, _mm256_loadu_ps(a + 24), _mm256_loadu_ps(a + 8)), sum23);
     }
     const float* d = offset + 3 * i;
     const __m256 c01 = _mm256_blend_ps(ones, _mm256_broadcast_ss(d), 0xF0);
@@ -126,8 +122,12 @@ __attribute__((target("avx2,fma"))) void interpolate_avx2_runs(
     const float* const* guide_table, const float* segments, const float* weight,
     const float* parameter, const float* offset, int64_t count, float* out) {
   const __m256 ones = _mm256_set1_ps(1);
+  __m256 weight_k[kGuides];
   int last[kGuides];
-  for (int k = 0; k < kGuides; ++k) last[k] = static_cast<int>(segments[k]) - 1;
+  for (int k = 0; k < kGuides; ++k) {
+    weight_k[k] = _mm256_set1_ps(weight[k]);
+    last[k] = static_cast<int>(segments[k]) - 1;
+  }
   // The current run: u in [low, high), and its P and Q.
   float low = 1, high = 0;
   __m256 p01 = _mm256_setzero_ps(), p23 = p01, q01 = p01, q23 = p01;
@@ -142,14 +142,10 @@ __attribute__((target("avx2,fma"))) void interpolate_avx2_runs(
         if (j > 0) low = std::max(low, static_cast<float>(j) / segments[k]);
         if (j < last[k]) high = std::min(high, static_cast<float>(j + 1) / segments[k]);
         const float* a = guide_table[k] + static_cast<int64_t>(j) * kParticleFloats;
-        const __m256 b01 = _mm256_loadu_ps(a + 16), b23 = _mm256_loadu_ps(a + 24);
-        const __m256 j_k = _mm256_set1_ps(static_cast<float>(j));
-        const __m256 w_k = _mm256_set1_ps(weight[k]);
-        const __m256 ws_k = _mm256_set1_ps(weight[k] * segments[k]);
-        p01 = _mm256_fmadd_ps(w_k, _mm256_fnmadd_ps(j_k, b01, _mm256_loadu_ps(a)), p01);
-        p23 = _mm256_fmadd_ps(w_k, _mm256_fnmadd_ps(j_k, b23, _mm256_loadu_ps(a + 8)), p23);
-        q01 = _mm256_fmadd_ps(ws_k, b01, q01);
-        q23 = _mm256_fmadd_ps(ws_k, b23, q23);
+        p01 = _mm256_fmadd_ps(weight_k[k], _mm256_loadu_ps(a), p01);
+        p23 = _mm256_fmadd_ps(weight_k[k], _mm256_loadu_ps(a + 8), p23);
+        q01 = _mm256_fmadd_ps(weight_k[k], _mm256_loadu_ps(a + 16), q01);
+        q23 = _mm256_fmadd_ps(weight_k[k], _mm256_loadu_ps(a + 24), q23);
       }
     }
     const __m256 uu = _mm256_set1_ps(u);

@@ -9,8 +9,11 @@
 
 namespace hair {
 
-/// Floats per guide particle in the table: position, the frame's three columns, then the
-/// steps of those four to the next particle, each 4 floats (xyz and a pad).
+/// Floats per guide particle in the table, each of its eight columns 4 floats (xyz and a
+/// pad). Of the guide's position and frame C = (G, F0, F1, F2), linear along each segment
+/// in the arc parameter u: particle j's record holds P_j = C_j - j B_j and then Q_j = S B_j,
+/// where B_j = C_j+1 - C_j and S is the guide's segment count, so that on segment j
+/// (u S in [j, j + 1]) C(u) = P_j + u Q_j.
 inline constexpr int kParticleFloats = 32;
 
 /// One strand's interpolated points.

@@ -352,10 +352,17 @@ void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame,
       }
       put(first + k, q);
     }
+    // Particle k's record as the kernel reads it: the columns C_k and the steps B_k =
+    // C_k+1 - C_k make C(u) = C_k + (u S - k) B_k on the segment (S segments), so the
+    // record holds P_k = C_k - k B_k and Q_k = S B_k, and C(u) = P_k + u Q_k.
+    const auto segments = static_cast<float>(count - 1);
     for (int64_t k = 0; k < count; ++k) {
       Column* here = table.data() + (first + k) * kColumns;
-      for (int c = 0; c < 4; ++c)
-        here[4 + c] = k + 1 < count ? Column(here[kColumns + c] - here[c]) : Column::Zero();
+      for (int c = 0; c < 4; ++c) {
+        const Column step = k + 1 < count ? Column(here[kColumns + c] - here[c]) : Column::Zero();
+        here[c] -= static_cast<float>(k) * step;
+        here[4 + c] = segments * step;
+      }
     }
   }
 }

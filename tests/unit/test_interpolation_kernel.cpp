@@ -47,17 +47,18 @@ TEST(InterpolationKernel, EveryVersionComputesTheWeightedGuidePoints) {
                                            parameter.data(), offset.data(), point_count,
                                            portable.data());
         for (int i = 0; i < point_count; ++i) {
-          // The formula in double: sum_g w_g (p + f dp + sum_c d_c (m_c + f dm_c)).
+          // The formula in double: sum_g w_g (P + u Q + sum_c d_c (P_c + u Q_c)) at the
+          // particle that starts the point's segment.
           double expected[3] = {0, 0, 0};
           for (int k = 0; k < guide_count; ++k) {
             double position = static_cast<double>(parameter[i]) * segments[k];
             int particle = std::min(static_cast<int>(position), particles[k] - 2);
-            double f = position - particle;
             const float* a = guide_table[k] + particle * kParticleFloats;
             for (int r = 0; r < 3; ++r) {
-              double p = a[r] + f * a[16 + r];
+              const double u = parameter[i];
+              double p = a[r] + u * a[16 + r];
               for (int c = 0; c < 3; ++c)
-                p += offset[3 * i + c] * (a[4 + 4 * c + r] + f * a[20 + 4 * c + r]);
+                p += offset[3 * i + c] * (a[4 + 4 * c + r] + u * a[20 + 4 * c + r]);
               expected[r] += weight[k] * p;
             }
           }
