@@ -3,7 +3,8 @@
 // degrees about their anchors, and S strands of P points rooted among them (the guides'
 // cluster, so barycentric where the triangle allows), with 1 and 2 threads. Without reading
 // or writing files, and at a chosen points per strand: the paper's strands had a few tens of
-// points, our grown ones 28 to 144 (docs/interpolate.md).
+// points, our grown ones 28 to 144 (docs/interpolate.md). Then the memory floor: a loop that
+// only moves the same bytes per point.
 //   build/bin/hair-bench-interpolation --benchmark_repetitions=5 --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -101,6 +102,40 @@ BENCHMARK(interpolate_frame)
     ->Args({10000, 144, 2})
     ->Args({100000, 25, 1})
     ->Args({100000, 25, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+/// The memory floor of a frame: a loop that moves the bytes interpolate_frame() moves per
+/// point (its parameter and offset read, 16 bytes; its point written, 12) with next to no
+/// arithmetic, over as many points as long01 has at 10,000 and 100,000 strands.
+void memory_floor(benchmark::State& state) {
+  const auto points = static_cast<size_t>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  std::vector<float> parameter(points, 0.5f), offset(3 * points, 0.25f), out(3 * points);
+  omp_set_num_threads(threads);
+  for (auto _ : state) {
+    const auto count = static_cast<int64_t>(points);
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < count; ++i) {
+      const float u = parameter[static_cast<size_t>(i)];
+      const float* d = offset.data() + 3 * i;
+      float* o = out.data() + 3 * i;
+      o[0] = d[0] + u;
+      o[1] = d[1] * u;
+      o[2] = d[2] - u;
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["ns_per_point"] = benchmark::Counter(
+      static_cast<double>(points),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(memory_floor)
+    ->ArgNames({"points", "threads"})
+    ->Args({1278434, 1})
+    ->Args({1278434, 2})
+    ->Args({12814741, 1})
+    ->Args({12814741, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
