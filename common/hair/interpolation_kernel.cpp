@@ -85,17 +85,36 @@ __attribute__((target("avx2,fma"))) inline void store_point(__m256 sum, bool las
   out[2] = xyzw[2];
 }
 
+/// [position | column 0] and [column 1 | column 2] applied to an offset d: c01 = [1 | d0]
+/// and c23 = [d1 | d2] multiplied in (a multiply and a fused multiply-add); the point is
+/// the sum of the halves (store_point()).
+__attribute__((target("avx2,fma"))) inline __m256 apply_offset(const float* d, __m256 columns01,
+                                                               __m256 columns23) {
+  const __m256 c01 = _mm256_blend_ps(_mm256_set1_ps(1), _mm256_broadcast_ss(d), 0xF0);
+  const __m256 c23 = _mm256_blend_ps(_mm256_broadcast_ss(d + 1), _mm256_broadcast_ss(d + 2), 0xF0);
+  return _mm256_fmadd_ps(c01, columns01, _mm256_mul_ps(c23, columns23));
+}
+
+/// Per guide of a strand: its weight in every lane and its last segment.
+template <int kGuides>
+struct GuideConstants {
+  __m256 weight[kGuides];
+  int last[kGuides];
+  __attribute__((target("avx2,fma"))) GuideConstants(const float* segments, const float* weights) {
+    for (int k = 0; k < kGuides; ++k) {
+      weight[k] = _mm256_set1_ps(weights[k]);
+      last[k] = static_cast<int>(segments[k]) - 1;
+    }
+  }
+};
+
 template <int kGuides>
 __attribute__((target("avx2,fma"))) void interpolate_avx2_per_point(
     const float* const* guide_table, const float* segments, const float* weight,
     const float* parameter, const float* offset, int64_t count, float* out) {
-  const __m256 ones = _mm256_set1_ps(1);
-  __m256 weight_k[kGuides];
-  int last[kGuides];
-  for (int k = 0; k < kGuides; ++k) {
-    weight_k[k] = _mm256_set1_ps(weight[k]);
-    last[k] = static_cast<int>(segments[k]) - 1;
-  }
+  const GuideConstants<kGuides> guides(segments, weight);
+  const __m256* weight_k = guides.weight;
+  const int* last = guides.last;
   for (int64_t i = 0; i < count; ++i) {
     const float u = parameter[i];
     __m256 sum01 = _mm256_setzero_ps(), sum23 = _mm256_setzero_ps();
@@ -108,12 +127,7 @@ __attribute__((target("avx2,fma"))) void interpolate_avx2_per_point(
       sum23 = _mm256_fmadd_ps(
           weight_k[k], _mm256_fmadd_ps(uu, _mm256_loadu_ps(a + 24), _mm256_loadu_ps(a + 8)), sum23);
     }
-    const float* d = offset + 3 * i;
-    const __m256 c01 = _mm256_blend_ps(ones, _mm256_broadcast_ss(d), 0xF0);
-    const __m256 c23 =
-        _mm256_blend_ps(_mm256_broadcast_ss(d + 1), _mm256_broadcast_ss(d + 2), 0xF0);
-    store_point(_mm256_fmadd_ps(c01, sum01, _mm256_mul_ps(c23, sum23)), i + 1 == count,
-                out + 3 * i);
+    store_point(apply_offset(offset + 3 * i, sum01, sum23), i + 1 == count, out + 3 * i);
   }
 }
 
@@ -121,13 +135,9 @@ template <int kGuides>
 __attribute__((target("avx2,fma"))) void interpolate_avx2_runs(
     const float* const* guide_table, const float* segments, const float* weight,
     const float* parameter, const float* offset, int64_t count, float* out) {
-  const __m256 ones = _mm256_set1_ps(1);
-  __m256 weight_k[kGuides];
-  int last[kGuides];
-  for (int k = 0; k < kGuides; ++k) {
-    weight_k[k] = _mm256_set1_ps(weight[k]);
-    last[k] = static_cast<int>(segments[k]) - 1;
-  }
+  const GuideConstants<kGuides> guides(segments, weight);
+  const __m256* weight_k = guides.weight;
+  const int* last = guides.last;
   // The current run: u in [low, high), and its P and Q.
   float low = 1, high = 0;
   __m256 p01 = _mm256_setzero_ps(), p23 = p01, q01 = p01, q23 = p01;
@@ -149,13 +159,9 @@ __attribute__((target("avx2,fma"))) void interpolate_avx2_runs(
       }
     }
     const __m256 uu = _mm256_set1_ps(u);
-    const float* d = offset + 3 * i;
-    const __m256 c01 = _mm256_blend_ps(ones, _mm256_broadcast_ss(d), 0xF0);
-    const __m256 c23 =
-        _mm256_blend_ps(_mm256_broadcast_ss(d + 1), _mm256_broadcast_ss(d + 2), 0xF0);
-    store_point(_mm256_fmadd_ps(c01, _mm256_fmadd_ps(uu, q01, p01),
-                                _mm256_mul_ps(c23, _mm256_fmadd_ps(uu, q23, p23))),
-                i + 1 == count, out + 3 * i);
+    store_point(
+        apply_offset(offset + 3 * i, _mm256_fmadd_ps(uu, q01, p01), _mm256_fmadd_ps(uu, q23, p23)),
+        i + 1 == count, out + 3 * i);
   }
 }
 
@@ -178,7 +184,6 @@ __attribute__((target("avx2,fma"))) void transform_avx2(const float* frames,
                                                         const float* local, int64_t count,
                                                         float* out) {
   if (count <= 0) return;  // `frames` may be empty then
-  const __m256 ones = _mm256_set1_ps(1);
   int32_t current = frame_index ? frame_index[0] : 0;
   const float* first = frames + static_cast<int64_t>(current) * kFrameFloats;
   __m256 f01 = _mm256_loadu_ps(first), f23 = _mm256_loadu_ps(first + 8);
@@ -189,11 +194,7 @@ __attribute__((target("avx2,fma"))) void transform_avx2(const float* frames,
       f01 = _mm256_loadu_ps(f);
       f23 = _mm256_loadu_ps(f + 8);
     }
-    const float* p = local + 3 * i;
-    const __m256 c01 = _mm256_blend_ps(ones, _mm256_broadcast_ss(p), 0xF0);
-    const __m256 c23 =
-        _mm256_blend_ps(_mm256_broadcast_ss(p + 1), _mm256_broadcast_ss(p + 2), 0xF0);
-    store_point(_mm256_fmadd_ps(c01, f01, _mm256_mul_ps(c23, f23)), i + 1 == count, out + 3 * i);
+    store_point(apply_offset(local + 3 * i, f01, f23), i + 1 == count, out + 3 * i);
   }
 }
 
