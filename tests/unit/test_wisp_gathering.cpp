@@ -51,18 +51,32 @@ std::vector<std::vector<Vec3>> three_strand_braid() {
   return polylines;
 }
 
+/// The strands of `polylines` as one braided cluster: its wisp gathered (the wisp, its
+/// centre strand and the strands left out).
+struct GatheredWisp {
+  WispPlan wisp;
+  std::vector<Vec3> centre;
+  std::vector<GuideStrand> loose;
+};
+GatheredWisp gather_the_wisp(const std::vector<std::vector<Vec3>>& polylines) {
+  StrandSet strands = strands_of(polylines);
+  GuidePlan plan = plan_guides(strands, {static_cast<int8_t>(HairStyle::braided)}, 10);
+  EXPECT_EQ(plan.wisps.size(), 1u);
+  GatheredWisp gathered;
+  if (plan.wisps.empty()) return gathered;
+  gathered.wisp = plan.wisps[0];
+  gathered.centre =
+      gather_wisp(strands, gathered.wisp, 0.02, 0.015, sphere_field(), 0.001, gathered.loose);
+  return gathered;
+}
+
 TEST(WispGathering, TheBraidIsAWispAndTheStrayIsLeftOut) {
   std::vector<std::vector<Vec3>> polylines = three_strand_braid();
   // A stray from the same place that ends 0.3 m away.
   std::vector<Vec3> stray;
   for (int i = 0; i <= 40; ++i) stray.emplace_back(0.2 + 0.0075 * i, -0.002 * i, 0.0);
   polylines.push_back(stray);
-  StrandSet strands = strands_of(polylines);
-  GuidePlan plan = plan_guides(strands, {static_cast<int8_t>(HairStyle::braided)}, 10);
-  ASSERT_EQ(plan.wisps.size(), 1u);
-  WispPlan wisp = plan.wisps[0];
-  std::vector<GuideStrand> loose;
-  std::vector<Vec3> centre = gather_wisp(strands, wisp, 0.02, 0.015, sphere_field(), 0.001, loose);
+  auto [wisp, centre, loose] = gather_the_wisp(polylines);
   ASSERT_GE(centre.size(), 5u);
   EXPECT_EQ(wisp.member_strand.size(), 3u);
   ASSERT_EQ(loose.size(), 1u);
@@ -86,12 +100,7 @@ TEST(WispGathering, AStrandThatEndsPartWayDownTheBraidJoinsTheWisp) {
   for (int i = 0; i <= 10; ++i) joining.emplace_back(0.3 - 0.01 * i, -0.005 * i, 0.0);
   for (int i = 1; i <= 10; ++i) joining.emplace_back(0.2, -0.05 - 0.005 * i, 0.0);
   polylines.push_back(joining);
-  StrandSet strands = strands_of(polylines);
-  GuidePlan plan = plan_guides(strands, {static_cast<int8_t>(HairStyle::braided)}, 10);
-  ASSERT_EQ(plan.wisps.size(), 1u);
-  WispPlan wisp = plan.wisps[0];
-  std::vector<GuideStrand> loose;
-  std::vector<Vec3> centre = gather_wisp(strands, wisp, 0.02, 0.015, sphere_field(), 0.001, loose);
+  auto [wisp, centre, loose] = gather_the_wisp(polylines);
   ASSERT_GE(centre.size(), 5u);
   EXPECT_TRUE(loose.empty());
   ASSERT_EQ(wisp.member_strand.size(), 4u);
