@@ -17,11 +17,9 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-/// Floats per wisp tetrahedron in a frame's table: origin (3), frame matrix (9, row-major).
-constexpr int kRecord = 12;
-/// Per guide particle in a frame's table: position, then the frame's three columns, each
-/// padded to 4 floats, then the same four for the step to the next particle (zero after the
-/// last), so that a point is a few 4-wide SIMD multiply-adds per guide.
+/// Per guide particle in a frame's table: eight 4-float columns (interpolation_kernel.h's
+/// kParticleFloats: P_j, then Q_j, of the position and the frame's three columns), so that
+/// a point is a few SIMD multiply-adds per guide.
 constexpr int kColumns = 8;
 static_assert(kColumns * 4 == kParticleFloats);
 using Column = Eigen::Array4f;
@@ -375,9 +373,17 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
   points_m.resize(static_cast<size_t>(strands.point_count()) * 3);
   std::vector<Column> table;
   guide_frame_table(binding, frame, table);
-  // Wisp tetrahedra: origin and rotation matrix (row-major) per tetrahedron, then the
-  // transform from rest to now (translation, matrix) for bridged points.
-  std::vector<float> tetrahedra(static_cast<size_t>(binding.tetrahedron_count) * 2 * kRecord);
+  // Rigid frames in transform_points()'s layout: per wisp tetrahedron, where it is now,
+  // and the move from its rest (for bridged points); and the head.
+  auto put_frame = [](float* record, const Eigen::Vector3f& origin, const Eigen::Matrix3f& m) {
+    for (int r = 0; r < 3; ++r) {
+      record[r] = origin[r];
+      for (int c = 0; c < 3; ++c) record[4 + 4 * c + r] = m(r, c);
+    }
+  };
+  const auto tetrahedron_count = static_cast<size_t>(binding.tetrahedron_count);
+  std::vector<float> tetrahedron_frames(tetrahedron_count * kFrameFloats),
+      bridge_frames(tetrahedron_count * kFrameFloats);
   for (int64_t t = 0; t < binding.tetrahedron_count; ++t) {
     const float* in = frame.wisp_frames + 7 * t;
     const float* rest = binding.wisp_rest_frames.data() + 7 * t;
@@ -388,31 +394,13 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     Eigen::Matrix3f delta = m * m_rest.transpose();
     Eigen::Vector3f shift =
         Eigen::Vector3f(in[0], in[1], in[2]) - delta * Eigen::Vector3f(rest[0], rest[1], rest[2]);
-    float* out = tetrahedra.data() + t * 2 * kRecord;
-    for (int axis = 0; axis < 3; ++axis) out[axis] = in[axis];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) out[3 + 3 * r + c] = m(r, c);
-    for (int axis = 0; axis < 3; ++axis) out[kRecord + axis] = shift[axis];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) out[kRecord + 3 + 3 * r + c] = delta(r, c);
+    put_frame(tetrahedron_frames.data() + t * kFrameFloats, Eigen::Vector3f(in[0], in[1], in[2]),
+              m);
+    put_frame(bridge_frames.data() + t * kFrameFloats, shift, delta);
   }
-  // The same frames for transform_points(): the wisp tetrahedra, and the head.
-  std::vector<float> tetrahedron_frames(static_cast<size_t>(binding.tetrahedron_count) *
-                                        kFrameFloats);
-  for (int64_t t = 0; t < binding.tetrahedron_count; ++t) {
-    const float* in = tetrahedra.data() + t * 2 * kRecord;
-    float* frame_out = tetrahedron_frames.data() + t * kFrameFloats;
-    for (int axis = 0; axis < 3; ++axis) frame_out[axis] = in[axis];
-    for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) frame_out[4 + 4 * c + r] = in[3 + 3 * r + c];
-  }
-  const Eigen::Matrix3f head = frame.head.rotation.normalized().toRotationMatrix().cast<float>();
-  const Eigen::Vector3f head_t = frame.head.translation_m.cast<float>();
   float head_frame[kFrameFloats] = {};
-  for (int r = 0; r < 3; ++r) {
-    head_frame[r] = head_t[r];
-    for (int c = 0; c < 3; ++c) head_frame[4 + 4 * c + r] = head(r, c);
-  }
+  put_frame(head_frame, frame.head.translation_m.cast<float>(),
+            frame.head.rotation.normalized().toRotationMatrix().cast<float>());
   const float* offset = binding.offset_m.data();
   float* out = points_m.data();
 
@@ -431,13 +419,13 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
       for (int64_t row = interpolated; row < bound; ++row) {
         const float share = binding.parameter[static_cast<size_t>(row)];
         const float* p = offset + 3 * row;
+        const float* h = head_frame;
         const float* t =
-            tetrahedra.data() +
-            static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * 2 * kRecord +
-            kRecord;
+            bridge_frames.data() +
+            static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * kFrameFloats;
         for (int r = 0; r < 3; ++r) {
-          float with_head = head(r, 0) * p[0] + head(r, 1) * p[1] + head(r, 2) * p[2] + head_t[r];
-          float with_wisp = t[r] + t[3 + 3 * r] * p[0] + t[4 + 3 * r] * p[1] + t[5 + 3 * r] * p[2];
+          float with_head = h[4 + r] * p[0] + h[8 + r] * p[1] + h[12 + r] * p[2] + h[r];
+          float with_wisp = t[r] + t[4 + r] * p[0] + t[8 + r] * p[1] + t[12 + r] * p[2];
           out[3 * row + r] = (1 - share) * with_head + share * with_wisp;
         }
       }
