@@ -4,16 +4,23 @@
 // cluster, so barycentric where the triangle allows), with 1 and 2 threads. Without reading
 // or writing files, and at a chosen points per strand: the paper's strands had a few tens of
 // points, our grown ones 28 to 144 (docs/interpolate.md). Then the memory floor: a loop that
-// only moves the same bytes per point.
+// only moves the same bytes per point. With HAIR_BENCH_SCENE=DIR (a folder holding a
+// pipeline's guides.h5, strands.h5 and styles.h5, e.g. bench/interpolate_makehuman.sh's
+// work folder), also interpolate_frame on that real scene, frame 1, with default
+// parameters.
 //   build/bin/hair-bench-interpolation --benchmark_repetitions=5 --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdlib>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "hair/frames_io.h"
+#include "hair/h5/file.h"
 #include "hair/hair_style.h"
 #include "hair/strand_interpolation.h"
 
@@ -139,6 +146,42 @@ BENCHMARK(memory_floor)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+/// interpolate_frame on the scene in `folder` (guides.h5, strands.h5, styles.h5), frame 1.
+void real_scene(benchmark::State& state, const std::string& folder) {
+  const int threads = static_cast<int>(state.range(0));
+  hair::h5::File guides_file = hair::h5::File::open_read_only(folder + "/guides.h5");
+  hair::InterpolationInput input = hair::read_interpolation_input(
+      guides_file, hair::h5::File::open_read_only(folder + "/strands.h5"),
+      hair::h5::File::open_read_only(folder + "/styles.h5"));
+  hair::StrandBinding binding = hair::bind_strands(input.strands, input.guides, {});
+  hair::GuideFrameData data = hair::read_guide_frame(guides_file, input.frame_count > 1 ? 1 : 0);
+  hair::GuideFrame frame{data.guide_points_m.data(), data.wisp_frames.data(),
+                         input.head[input.frame_count > 1 ? 1 : 0]};
+  std::vector<float> out;
+  omp_set_num_threads(threads);
+  for (auto _ : state) {
+    hair::interpolate_frame(binding, input.strands, frame, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  const auto points = static_cast<double>(input.strands.point_count());
+  state.counters["points"] = points;
+  state.counters["ns_per_point"] = benchmark::Counter(
+      points, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  if (const char* folder = std::getenv("HAIR_BENCH_SCENE"))
+    benchmark::RegisterBenchmark("real_scene", real_scene, std::string(folder))
+        ->ArgName("threads")
+        ->Arg(1)
+        ->Arg(2)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -18,7 +18,8 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 
 /// Per guide particle in a frame's table: eight 4-float columns (interpolation_kernel.h's
-/// kParticleFloats: P_j, then Q_j, of the position and the frame's three columns), so that
+/// kParticleFloats: of the position and of each of the frame's three columns, P_j and
+/// then Q_j), so that
 /// a point is a few SIMD multiply-adds per guide.
 constexpr int kColumns = 8;
 static_assert(kColumns * 4 == kParticleFloats);
@@ -304,24 +305,53 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
           (point_of(strands.points, begin + i) - blended).cast<float>().transpose();
     }
   }
+
+  // The interpolated points' runs.
+  binding.run_offsets.assign(static_cast<size_t>(strand_count) + 1, 0);
+  binding.run_of_point.assign(static_cast<size_t>(point_count), 0);
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t begin = strands.offsets[si];
+    const int64_t from = begin + binding.interpolated_from[si];
+    const int64_t to = begin + binding.bound_from[si];
+    if (!binding.bridged[si] && from < to) {
+      const StrandGuides used = strand_guides(binding, s);
+      strand_runs(used.segments.data(), used.count, binding.parameter.data() + from, to - from,
+                  binding.run_of_point.data() + from, binding.run_particles);
+    }
+    binding.run_offsets[si + 1] = static_cast<int64_t>(binding.run_particles.size());
+  }
   return binding;
+}
+
+StrandGuides strand_guides(const StrandBinding& binding, int64_t strand) {
+  StrandGuides used;
+  const auto si = static_cast<size_t>(strand);
+  for (size_t k = 0; k < 3; ++k) {
+    const int32_t g = binding.guides[si][k];
+    if (g < 0) continue;
+    const auto n = static_cast<size_t>(used.count++);
+    used.guide[n] = g;
+    used.segments[n] = static_cast<float>(binding.guide_offsets[static_cast<size_t>(g) + 1] -
+                                          binding.guide_offsets[static_cast<size_t>(g)] - 1);
+    used.weight[n] = binding.weights[si][k];
+  }
+  return used;
 }
 
 namespace {
 
 /// Per guide particle of one frame: its position and frame (see interpolate_frame()).
-void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame,
-                       std::vector<Column>& table) {
+void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame, Column* table) {
   const float* rest_points = binding.guide_rest_points.data();
   const int64_t guides = static_cast<int64_t>(binding.guide_offsets.size()) - 1;
-  table.resize(static_cast<size_t>(binding.guide_rest_points.rows()) * kColumns);
   const Eigen::Quaterniond head = frame.head.rotation.normalized();
   auto put = [&](int64_t row, const Eigen::Quaterniond& q) {
     Eigen::Matrix3f m = q.toRotationMatrix().cast<float>();
-    Column* out = table.data() + row * kColumns;
+    Column* out = table + row * kColumns;
     const float* p = frame.guide_points_m + 3 * row;
     out[0] = Column(p[0], p[1], p[2], 0);
-    for (int c = 0; c < 3; ++c) out[1 + c] = Column(m(0, c), m(1, c), m(2, c), 0);
+    for (int c = 0; c < 3; ++c) out[2 + 2 * c] = Column(m(0, c), m(1, c), m(2, c), 0);
   };
   std::vector<Eigen::Quaterniond> segment;
   for (int64_t g = 0; g < guides; ++g) {
@@ -352,14 +382,15 @@ void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame,
     }
     // Particle k's record as the kernel reads it: the columns C_k and the steps B_k =
     // C_k+1 - C_k make C(u) = C_k + (u S - k) B_k on the segment (S segments), so the
-    // record holds P_k = C_k - k B_k and Q_k = S B_k, and C(u) = P_k + u Q_k.
+    // record holds, per column, P_k = C_k - k B_k and then Q_k = S B_k, and C(u) = P_k +
+    // u Q_k.
     const auto segments = static_cast<float>(count - 1);
     for (int64_t k = 0; k < count; ++k) {
-      Column* here = table.data() + (first + k) * kColumns;
-      for (int c = 0; c < 4; ++c) {
+      Column* here = table + (first + k) * kColumns;
+      for (int c = 0; c < 8; c += 2) {
         const Column step = k + 1 < count ? Column(here[kColumns + c] - here[c]) : Column::Zero();
         here[c] -= static_cast<float>(k) * step;
-        here[4 + c] = segments * step;
+        here[c + 1] = segments * step;
       }
     }
   }
@@ -371,7 +402,11 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
                        const GuideFrame& frame, std::vector<float>& points_m) {
   const int64_t strand_count = strands.strand_count();
   points_m.resize(static_cast<size_t>(strands.point_count()) * 3);
-  std::vector<Column> table;
+  // The table on a 64-byte boundary (the kernel's loads are aligned).
+  std::vector<Column> table_storage(
+      static_cast<size_t>(binding.guide_rest_points.rows()) * kColumns + 3);
+  Column* table = table_storage.data() +
+                  (4 - reinterpret_cast<uintptr_t>(table_storage.data()) / sizeof(Column) % 4) % 4;
   guide_frame_table(binding, frame, table);
   // Rigid frames in transform_points()'s layout: per wisp tetrahedron, where it is now,
   // and the move from its rest (for bridged points); and the head.
@@ -430,23 +465,25 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
         }
       }
     } else if (interpolated < bound) {
-      // Interpolated: sum_g w_g (G_g(u) + F_g(u) d).
-      int guide_count = 0;
+      // Interpolated: sum_g w_g (G_g(u) + F_g(u) d), in runs where the strand has them.
+      const StrandGuides used = strand_guides(binding, s);
       const float* guide_table[3];
-      float segments[3], weight[3];
-      for (size_t k = 0; k < 3; ++k) {
-        int32_t g = binding.guides[si][k];
-        if (g < 0) continue;
-        int64_t first = binding.guide_offsets[static_cast<size_t>(g)];
-        guide_table[guide_count] = table.data()->data() + first * kParticleFloats;
-        segments[guide_count] =
-            static_cast<float>(binding.guide_offsets[static_cast<size_t>(g) + 1] - first - 1);
-        weight[guide_count] = binding.weights[si][k];
-        ++guide_count;
-      }
-      interpolate_strand_points(guide_table, segments, weight, guide_count,
+      for (size_t k = 0; k < static_cast<size_t>(used.count); ++k)
+        guide_table[k] = table->data() + binding.guide_offsets[static_cast<size_t>(used.guide[k])] *
+                                             kParticleFloats;
+      const int64_t first_run = binding.run_offsets[si];
+      const auto run_count = static_cast<int>(binding.run_offsets[si + 1] - first_run);
+      if (run_count > 0)
+        interpolate_strand_runs(guide_table, used.weight.data(), used.count,
+                                binding.run_particles.data() + first_run, run_count,
+                                binding.run_of_point.data() + interpolated,
                                 binding.parameter.data() + interpolated, offset + 3 * interpolated,
                                 bound - interpolated, out + 3 * interpolated);
+      else
+        interpolate_strand_points(guide_table, used.segments.data(), used.weight.data(), used.count,
+                                  binding.parameter.data() + interpolated,
+                                  offset + 3 * interpolated, bound - interpolated,
+                                  out + 3 * interpolated);
     }
     // Bound: origin + R_tet local.
     transform_points(tetrahedron_frames.data(), binding.tetrahedron.data() + bound,

@@ -91,6 +91,14 @@ struct StrandBinding {
   /// head to the wisp (a braided strand): parameter is the share of the way along the
   /// bridge, offset_m the rest position, tetrahedron the first bound point's.
   std::vector<int8_t> bridged;
+  /// The interpolated points in runs (interpolation_kernel.h's strand_runs(), computed
+  /// once here so that a frame does not search for them): per strand its first run
+  /// (#strands + 1, CSR; no runs for a strand of more than kMaxStrandRuns, which is
+  /// interpolated point by point), per run each used guide's particle (in the order of
+  /// `guides`, the unused left out), and per point its run within its strand.
+  std::vector<int64_t> run_offsets;
+  std::vector<std::array<int32_t, 3>> run_particles;
+  std::vector<uint8_t> run_of_point;
   int64_t tetrahedron_count = 0;
   std::vector<float> wisp_rest_frames;  ///< #tetrahedra x 7
   std::vector<int64_t> guide_offsets;   ///< the guides' CSR offsets
@@ -111,6 +119,15 @@ struct StrandBinding {
 /// from moving with the head to moving with that point's tetrahedron (method braided).
 /// Deterministic. Throws Error::usage for parameters out of range and Error::runtime for
 /// guides or bindings that do not fit the strands.
+/// A strand's used guides (binding.guides without the -1), their segment counts and weights.
+struct StrandGuides {
+  int count = 0;
+  std::array<int32_t, 3> guide = {-1, -1, -1};
+  std::array<float, 3> segments = {0, 0, 0};
+  std::array<float, 3> weight = {0, 0, 0};
+};
+StrandGuides strand_guides(const StrandBinding& binding, int64_t strand);
+
 StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,
                            const InterpolationParams& params);
 
