@@ -19,8 +19,7 @@ using Vec3 = Eigen::Vector3d;
 
 /// Per guide particle in a frame's table: eight 4-float columns (interpolation_kernel.h's
 /// kParticleFloats: of the position and of each of the frame's three columns, P_j and
-/// then Q_j), so that
-/// a point is a few SIMD multiply-adds per guide.
+/// then Q_j), so that a point is a few SIMD multiply-adds per guide.
 constexpr int kColumns = 8;
 static_assert(kColumns * 4 == kParticleFloats);
 using Column = Eigen::Array4f;
