@@ -145,6 +145,15 @@ __attribute__((target("avx2,fma"))) inline void store_point(__m128 point, bool l
   out[2] = xyzw[2];
 }
 
+/// [P e | Q e] for e = (1, d) from a record's four registers (32-byte aligned), with d's
+/// components in every lane.
+__attribute__((target("avx2,fma"))) inline __m256 apply_offset(const float* record, __m256 d0,
+                                                               __m256 d1, __m256 d2) {
+  __m256 s = _mm256_fmadd_ps(d0, _mm256_load_ps(record + 8), _mm256_load_ps(record));
+  s = _mm256_fmadd_ps(d1, _mm256_load_ps(record + 16), s);
+  return _mm256_fmadd_ps(d2, _mm256_load_ps(record + 24), s);
+}
+
 /// P e + u Q e from [P e | Q e].
 __attribute__((target("avx2,fma"))) inline __m128 at_parameter(__m256 s, float u) {
   return _mm_fmadd_ps(_mm_set1_ps(u), _mm256_extractf128_ps(s, 1), _mm256_castps256_ps128(s));
@@ -177,10 +186,7 @@ __attribute__((target("avx2,fma"))) void interpolate_avx2_per_point(
     for (int k = 0; k < kGuides; ++k) {
       const int j = std::min(static_cast<int>(u * segments[k]), guides.last[k]);
       const float* a = guide_table[k] + static_cast<int64_t>(j) * kParticleFloats;
-      __m256 s = _mm256_fmadd_ps(d0, _mm256_loadu_ps(a + 8), _mm256_loadu_ps(a));
-      s = _mm256_fmadd_ps(d1, _mm256_loadu_ps(a + 16), s);
-      s = _mm256_fmadd_ps(d2, _mm256_loadu_ps(a + 24), s);
-      sum = _mm256_fmadd_ps(guides.weight[k], s, sum);
+      sum = _mm256_fmadd_ps(guides.weight[k], apply_offset(a, d0, d1, d2), sum);
     }
     store_point(at_parameter(sum, u), i + 1 == count, out + 3 * i);
   }
@@ -193,11 +199,9 @@ __attribute__((target("avx2,fma"))) inline __m128 run_point(const float* records
                                                             const float* offset, int64_t i) {
   const float* record = records + static_cast<size_t>(run_of_point[i]) * kParticleFloats;
   const float* d = offset + 3 * i;
-  __m256 s =
-      _mm256_fmadd_ps(_mm256_broadcast_ss(d), _mm256_load_ps(record + 8), _mm256_load_ps(record));
-  s = _mm256_fmadd_ps(_mm256_broadcast_ss(d + 1), _mm256_load_ps(record + 16), s);
-  s = _mm256_fmadd_ps(_mm256_broadcast_ss(d + 2), _mm256_load_ps(record + 24), s);
-  return at_parameter(s, parameter[i]);
+  return at_parameter(apply_offset(record, _mm256_broadcast_ss(d), _mm256_broadcast_ss(d + 1),
+                                   _mm256_broadcast_ss(d + 2)),
+                      parameter[i]);
 }
 
 template <int kGuides>

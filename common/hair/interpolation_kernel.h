@@ -18,7 +18,8 @@ namespace hair {
 /// guide's segment count, so that on segment j (u S in [j, j + 1]) C(u) = P_j + u Q_j.
 inline constexpr int kParticleFloats = 32;
 
-/// One strand's interpolated points.
+/// One strand's interpolated points, point by point. The guide tables must be 32-byte
+/// aligned.
 ///
 /// @param guide_table  per used guide, its first particle's record in the table
 /// @param segments     per used guide, its particle count - 1 (at least 1)
