@@ -76,19 +76,19 @@ double tetrahedron_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
 }
 
 int most_robust_altitude(const std::array<Vec3, 4>& x) {
+  // The six edges once; each size is then the cross product kOppositeFace or kEdgePair
+  // names (e.g. face 0, corners 1 2 3: (x2 - x1) x (x3 - x1)).
+  const Vec3 e01 = x[1] - x[0], e02 = x[2] - x[0], e03 = x[3] - x[0];
+  const Vec3 e12 = x[2] - x[1], e13 = x[3] - x[1], e23 = x[3] - x[2];
+  const std::array<double, 7> size{
+      e12.cross(e13).squaredNorm(), e02.cross(e03).squaredNorm(), e01.cross(e03).squaredNorm(),
+      e01.cross(e02).squaredNorm(), e01.cross(e23).squaredNorm(), e02.cross(e13).squaredNorm(),
+      e03.cross(e12).squaredNorm()};
   int best = -1;
   double best_size = 0;
   for (int which = 0; which < 7; ++which) {
-    double size;
-    if (which < 4) {
-      const auto& face = kOppositeFace[static_cast<size_t>(which)];
-      size = (x[face[1]] - x[face[0]]).cross(x[face[2]] - x[face[0]]).squaredNorm();
-    } else {
-      const auto& pair = kEdgePair[static_cast<size_t>(which - 4)];
-      size = (x[pair[1]] - x[pair[0]]).cross(x[pair[3]] - x[pair[2]]).squaredNorm();
-    }
-    if (size > best_size) {
-      best_size = size;
+    if (size[static_cast<size_t>(which)] > best_size) {
+      best_size = size[static_cast<size_t>(which)];
       best = which;
     }
   }

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "hair/altitude_strand.h"
 #include "hair/strand_dynamics.h"
@@ -100,6 +101,35 @@ TEST(AltitudeStrand, AltitudesAreLinearFormsOfTheCorners) {
   Altitude edge_edge = tetrahedron_altitude(corners, 4);
   Vec3 normal = Vec3(1, 0, 0).cross(Vec3(0.2, -0.7, 0.5)).normalized();
   EXPECT_NEAR(std::abs(edge_edge.length_m), std::abs(normal.dot(Vec3(0, -1, 0))), 1e-12);
+}
+
+TEST(AltitudeStrand, MostRobustAltitudeIsTheLargestOfTheSeven) {
+  // Against the definition: the first of the seven altitudes of largest robustness, on
+  // random tetrahedra, flat and needle-like ones among them, and a point (none).
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::array<Vec3, 4> corners;
+    for (Vec3& corner : corners)
+      corner = Vec3(coordinate(random), coordinate(random), coordinate(random));
+    if (trial % 4 == 1) corners[3] = 0.3 * corners[0] + 0.7 * corners[1];  // a flat one
+    if (trial % 4 == 2) corners[2] = corners[1] + 1e-6 * (corners[3] - corners[1]);
+    int expected = -1;
+    double largest = 0;
+    for (int which = 0; which < 7; ++which) {
+      double robustness = tetrahedron_altitude(corners, which).robustness_m2;
+      if (robustness > largest * (1 + 1e-12)) {
+        largest = robustness;
+        expected = which;
+      }
+    }
+    const int chosen = most_robust_altitude(corners);
+    ASSERT_GE(chosen, 0) << "trial " << trial;
+    EXPECT_NEAR(tetrahedron_altitude(corners, chosen).robustness_m2, largest, 1e-12 * largest)
+        << "trial " << trial << ": chose " << chosen << ", expected " << expected;
+  }
+  const std::array<Vec3, 4> point{Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(1, 2, 3)};
+  EXPECT_EQ(most_robust_altitude(point), -1);
 }
 
 TEST(StrandDynamics, HangingStrandSettlesWithItsLength) {
