@@ -7,7 +7,7 @@
 // only moves the same bytes per point. With HAIR_BENCH_SCENE=DIR (a folder holding a
 // pipeline's guides.h5, strands.h5 and styles.h5, e.g. bench/interpolate_makehuman.sh's
 // work folder), also interpolate_frame on that real scene, frame 1, with default
-// parameters.
+// parameters, and its interpolated points and runs by guide count.
 //   build/bin/hair-bench-interpolation --benchmark_repetitions=5 --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -165,6 +165,20 @@ void real_scene(benchmark::State& state, const std::string& folder) {
   }
   const auto points = static_cast<double>(input.strands.point_count());
   state.counters["points"] = points;
+  // Interpolated points and runs by the strand's guide count (1 = clump, 3 = barycentric).
+  double run_points[4] = {}, runs[4] = {};
+  for (int64_t s = 0; s < input.strands.strand_count(); ++s) {
+    const auto si = static_cast<size_t>(s);
+    if (binding.bridged[si]) continue;
+    const int count = hair::strand_guides(binding, s).count;
+    run_points[count] +=
+        static_cast<double>(binding.bound_from[si] - binding.interpolated_from[si]);
+    runs[count] += static_cast<double>(binding.run_offsets[si + 1] - binding.run_offsets[si]);
+  }
+  for (int count : {1, 2, 3}) {
+    state.counters["points_" + std::to_string(count) + "_guides"] = run_points[count];
+    state.counters["runs_" + std::to_string(count) + "_guides"] = runs[count];
+  }
   state.counters["ns_per_point"] = benchmark::Counter(
       points, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
