@@ -80,10 +80,10 @@ int most_robust_altitude(const std::array<Vec3, 4>& x) {
   // names (e.g. face 0, corners 1 2 3: (x2 - x1) x (x3 - x1)).
   const Vec3 e01 = x[1] - x[0], e02 = x[2] - x[0], e03 = x[3] - x[0];
   const Vec3 e12 = x[2] - x[1], e13 = x[3] - x[1], e23 = x[3] - x[2];
-  const std::array<double, 7> size{
-      e12.cross(e13).squaredNorm(), e02.cross(e03).squaredNorm(), e01.cross(e03).squaredNorm(),
-      e01.cross(e02).squaredNorm(), e01.cross(e23).squaredNorm(), e02.cross(e13).squaredNorm(),
-      e03.cross(e12).squaredNorm()};
+  const std::array<double, 7> size{e12.cross(e13).squaredNorm(), e02.cross(e03).squaredNorm(),
+                                   e01.cross(e03).squaredNorm(), e01.cross(e02).squaredNorm(),
+                                   e01.cross(e23).squaredNorm(), e02.cross(e13).squaredNorm(),
+                                   e03.cross(e12).squaredNorm()};
   int best = -1;
   double best_size = 0;
   for (int which = 0; which < 7; ++which) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <random>
 
 #include "hair/h5/dataset_blocks.h"
 #include "hair/h5/file.h"
@@ -65,6 +66,50 @@ TEST_F(H5FrameDatasetTest, FramesDeflatedInSeveralPiecesReadBackExactly) {
   EXPECT_EQ(chunk[0], 1u);
   EXPECT_EQ(chunk[1], static_cast<hsize_t>(rows));
   EXPECT_EQ(H5Pget_nfilters(properties.get()), 2);
+}
+
+TEST_F(H5FrameDatasetTest, NoiseIsStoredAndSmoothValuesDeflated) {
+  // Frame 0: every byte noise (random finite floats), so each piece is stored, not
+  // deflated: the chunk holds the raw bytes and a few per stored block. Frame 1: one
+  // value repeated, which deflates to next to nothing. Both read back exactly.
+  const int64_t rows = static_cast<int64_t>(2 * kFrameDeflatePieceBytes / 12) + 77;
+  std::vector<float> noise(static_cast<size_t>(rows * 3)), flat(noise.size(), 0.25f);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> value(-2, 2);
+  for (float& v : noise) v = value(random);
+  {
+    File file = File::create(path("noise.h5"));
+    FrameDatasetWriter writer(file, "/p", 2, rows, 3);
+    writer.write(0, noise);
+    writer.write(1, flat);
+    file.close();
+  }
+  File file = File::open_read_only(path("noise.h5"));
+  EXPECT_EQ(read_frame(file, "/p", 0), noise);
+  EXPECT_EQ(read_frame(file, "/p", 1), flat);
+  Handle dataset = file.open_dataset("/p");
+  std::array<hsize_t, 3> first = {0, 0, 0}, second = {1, 0, 0};
+  hsize_t noise_bytes = 0, flat_bytes = 0;
+  ASSERT_GE(H5Dget_chunk_storage_size(dataset.get(), first.data(), &noise_bytes), 0);
+  ASSERT_GE(H5Dget_chunk_storage_size(dataset.get(), second.data(), &flat_bytes), 0);
+  const double raw = static_cast<double>(noise.size() * sizeof(float));
+  // Random floats in [-2, 2] share their top byte's sign and exponent bits in part, so
+  // that plane deflates somewhat; the three others are stored.
+  EXPECT_GT(static_cast<double>(noise_bytes), 0.75 * raw);
+  EXPECT_LT(static_cast<double>(noise_bytes), 1.001 * raw);
+  EXPECT_LT(static_cast<double>(flat_bytes), 0.01 * raw);
+  // The choice itself: noise stored, a repeated value and a slow ramp deflated.
+  std::vector<unsigned char> bytes(kFrameDeflatePieceBytes);
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (unsigned char& b : bytes) b = static_cast<unsigned char>(byte(random));
+  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), bytes.size()), 0);
+  std::fill(bytes.begin(), bytes.end(), 7);
+  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), bytes.size()),
+            static_cast<int>(kFrameDeflateLevel));
+  for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i / 4096);
+  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), bytes.size()),
+            static_cast<int>(kFrameDeflateLevel));
+  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), 0), static_cast<int>(kFrameDeflateLevel));
 }
 
 TEST_F(H5FrameDatasetTest, AFrameSmallerThanAChunkIsOneChunk) {

@@ -34,7 +34,7 @@ DeflatePiece deflate_piece(const unsigned char* data, size_t size, bool last) {
   DeflatePiece piece;
   piece.adler = adler32(adler32(0, nullptr, 0), data, static_cast<uInt>(size));
   z_stream stream{};
-  if (deflateInit2(&stream, static_cast<int>(kFrameDeflateLevel), Z_DEFLATED, -15, 8,
+  if (deflateInit2(&stream, frame_piece_deflate_level(data, size), Z_DEFLATED, -15, 8,
                    Z_DEFAULT_STRATEGY) != Z_OK)
     return piece;
   piece.bytes.resize(deflateBound(&stream, static_cast<uLong>(size)) + 16);
@@ -77,6 +77,19 @@ std::vector<unsigned char> zlib_compress_parallel(const std::vector<unsigned cha
 }
 
 }  // namespace
+
+int frame_piece_deflate_level(const unsigned char* data, size_t size) {
+  const size_t sample = std::min(size, kFrameDeflateSampleBytes);
+  if (sample == 0) return static_cast<int>(kFrameDeflateLevel);
+  std::vector<unsigned char> out(compressBound(static_cast<uLong>(sample)));
+  uLongf out_size = static_cast<uLongf>(out.size());
+  if (compress2(out.data(), &out_size, data, static_cast<uLong>(sample),
+                static_cast<int>(kFrameDeflateLevel)) != Z_OK)
+    return static_cast<int>(kFrameDeflateLevel);
+  const bool shrinks =
+      static_cast<double>(out_size) < (1.0 - kFrameStoreBelowSaving) * static_cast<double>(sample);
+  return shrinks ? static_cast<int>(kFrameDeflateLevel) : 0;
+}
 
 FrameDatasetWriter::FrameDatasetWriter(File& file, const std::string& path, int64_t frames,
                                        int64_t rows, int64_t columns)
