@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "hair/h5/chunk_compression.h"
 #include "hair/h5/dataset_blocks.h"
 #include "hair/h5/file.h"
 #include "hair/h5/frame_dataset.h"
@@ -102,14 +103,13 @@ TEST_F(H5FrameDatasetTest, NoiseIsStoredAndSmoothValuesDeflated) {
   std::vector<unsigned char> bytes(kFrameDeflatePieceBytes);
   std::uniform_int_distribution<int> byte(0, 255);
   for (unsigned char& b : bytes) b = static_cast<unsigned char>(byte(random));
-  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), bytes.size()), 0);
+  const auto deflated = static_cast<int>(kFrameDeflateLevel);
+  EXPECT_EQ(piece_deflate_level(bytes.data(), bytes.size(), kFrameDeflateLevel), 0);
   std::fill(bytes.begin(), bytes.end(), 7);
-  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), bytes.size()),
-            static_cast<int>(kFrameDeflateLevel));
+  EXPECT_EQ(piece_deflate_level(bytes.data(), bytes.size(), kFrameDeflateLevel), deflated);
   for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i / 4096);
-  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), bytes.size()),
-            static_cast<int>(kFrameDeflateLevel));
-  EXPECT_EQ(frame_piece_deflate_level(bytes.data(), 0), static_cast<int>(kFrameDeflateLevel));
+  EXPECT_EQ(piece_deflate_level(bytes.data(), bytes.size(), kFrameDeflateLevel), deflated);
+  EXPECT_EQ(piece_deflate_level(bytes.data(), 0, kFrameDeflateLevel), deflated);
 }
 
 TEST_F(H5FrameDatasetTest, AFrameSmallerThanAChunkIsOneChunk) {

@@ -1,6 +1,10 @@
 #include "hair/h5/dataset.h"
 
 #include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "hair/h5/chunk_compression.h"
 
 namespace hair::h5 {
 
@@ -116,6 +120,61 @@ DatasetInfo dataset_info(const File& file, const std::string& path) {
   return info;
 }
 
+namespace {
+
+/// Writes `values` (row-major, `shape`) into `dataset`, chunked by whole rows (`chunk`),
+/// shuffled and deflated by us on all threads, pieces of noise stored
+/// (chunk_compression.h), and handed to HDF5 chunk by chunk (H5Dwrite_chunk). HDF5's own
+/// filters read the chunks back. False, with nothing promised about what was written,
+/// where this does not apply (chunks not of whole rows; types other than integers and
+/// floats stored as in memory) or fails: the caller then writes through H5Dwrite.
+bool write_row_chunks(hid_t dataset, hid_t stored_type, hid_t memory_type, const void* values,
+                      const Shape& shape, const Shape& chunk) {
+  const H5T_class_t type_class = H5Tget_class(memory_type);
+  if ((type_class != H5T_INTEGER && type_class != H5T_FLOAT) ||
+      H5Tequal(stored_type, memory_type) <= 0)
+    return false;
+  for (size_t axis = 1; axis < shape.size(); ++axis)
+    if (chunk[axis] != shape[axis]) return false;
+  const size_t element_bytes = H5Tget_size(memory_type);
+  const auto row_bytes =
+      static_cast<size_t>(element_count(Shape(shape.begin() + 1, shape.end()))) * element_bytes;
+  const int64_t rows = shape[0], chunk_rows = chunk[0];
+  const size_t chunk_bytes = static_cast<size_t>(chunk_rows) * row_bytes;
+  const int64_t chunks = (rows + chunk_rows - 1) / chunk_rows;
+  const auto* bytes = static_cast<const unsigned char*>(values);
+  // In batches, so that the compressed chunks held at once stay few: compressed in
+  // parallel, written in order.
+  constexpr int64_t kBatch = 64;
+  std::vector<std::vector<unsigned char>> compressed(static_cast<size_t>(kBatch));
+  std::vector<hsize_t> offset(shape.size(), 0);
+  for (int64_t first = 0; first < chunks; first += kBatch) {
+    const int64_t count = std::min(kBatch, chunks - first);
+#pragma omp parallel for schedule(dynamic)
+    for (int64_t c = 0; c < count; ++c) {
+      // The edge chunk padded with zeros to a whole chunk, as HDF5 filters it.
+      const int64_t row0 = (first + c) * chunk_rows;
+      const auto filled = static_cast<size_t>(std::min(chunk_rows, rows - row0)) * row_bytes;
+      std::vector<unsigned char> padded(chunk_bytes, 0), shuffled(chunk_bytes);
+      std::memcpy(padded.data(), bytes + static_cast<size_t>(row0) * row_bytes, filled);
+      shuffle_bytes(padded.data(), chunk_bytes / element_bytes, element_bytes, shuffled.data());
+      // One piece per byte plane, so that the planes of noise are stored.
+      compressed[static_cast<size_t>(c)] = zlib_stream_in_pieces(
+          shuffled.data(), chunk_bytes, chunk_bytes / element_bytes, kDeflateLevel);
+    }
+    for (int64_t c = 0; c < count; ++c) {
+      const std::vector<unsigned char>& data = compressed[static_cast<size_t>(c)];
+      offset[0] = static_cast<hsize_t>((first + c) * chunk_rows);
+      if (data.empty() ||
+          H5Dwrite_chunk(dataset, H5P_DEFAULT, 0, offset.data(), data.size(), data.data()) < 0)
+        return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 void write_raw_dataset(File& file, const std::string& path, hid_t stored_type, hid_t memory_type,
                        const void* values, const Shape& shape, const DatasetOptions& options) {
   if (shape.empty())
@@ -133,8 +192,11 @@ void write_raw_dataset(File& file, const std::string& path, hid_t stored_type, h
   if (!dataset.valid()) {
     throw Error(ErrorKind::runtime, file.name(), path, with_hdf5_message("cannot create dataset"));
   }
-  if (element_count(shape) > 0 &&
-      H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0) {
+  if (element_count(shape) == 0) return;
+  if (!chunk.empty() &&
+      write_row_chunks(dataset.get(), stored_type, memory_type, values, shape, chunk))
+    return;
+  if (H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0) {
     throw Error(ErrorKind::runtime, file.name(), path, with_hdf5_message("cannot write dataset"));
   }
 }

@@ -17,22 +17,9 @@ inline constexpr unsigned kFrameDeflateLevel = 1;
 
 /// Bytes of a frame's chunk deflated by one thread: a frame's chunk is deflated in pieces
 /// of this size on all OpenMP threads and the pieces joined into one zlib stream (as pigz
-/// does: each piece ends on a byte boundary, the checksums are combined).
+/// does: each piece ends on a byte boundary, the checksums are combined; pieces of noise
+/// stored: chunk_compression.h).
 inline constexpr size_t kFrameDeflatePieceBytes = size_t{1} << 20;
-
-/// A piece is stored, not deflated, where the first kFrameDeflateSampleBytes of it deflate
-/// by less than this share: deflate's time on noise (a coordinate's low bytes) buys
-/// nothing. A stored piece is still part of a valid deflate stream; readers see no
-/// difference.
-inline constexpr double kFrameStoreBelowSaving = 0.05;
-inline constexpr size_t kFrameDeflateSampleBytes = size_t{32} << 10;
-
-/// Deflate level for a piece of a shuffled frame: 0 (stored) where its first
-/// kFrameDeflateSampleBytes do not shrink by kFrameStoreBelowSaving at kFrameDeflateLevel,
-/// else kFrameDeflateLevel. The low bytes of float coordinates (the first half of a
-/// shuffled chunk) are noise: deflate spent most of a frame's time on them and saved
-/// nothing.
-int frame_piece_deflate_level(const unsigned char* data, size_t size);
 
 /// Creates `path` (float32, [frames, rows, columns], chunk [1, rows, columns], shuffle and
 /// deflate at kFrameDeflateLevel, pieces of noise stored) and writes it frame by frame. The writer
