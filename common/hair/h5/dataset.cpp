@@ -143,13 +143,14 @@ bool write_row_chunks(hid_t dataset, hid_t stored_type, hid_t memory_type, const
   const size_t chunk_bytes = static_cast<size_t>(chunk_rows) * row_bytes;
   const int64_t chunks = (rows + chunk_rows - 1) / chunk_rows;
   const auto* bytes = static_cast<const unsigned char*>(values);
-  // In batches, so that the compressed chunks held at once stay few: compressed in
-  // parallel, written in order.
-  constexpr int64_t kBatch = 64;
-  std::vector<std::vector<unsigned char>> compressed(static_cast<size_t>(kBatch));
+  // In batches of about 64 MiB, so that memory stays bounded: compressed in parallel,
+  // written in order.
+  const int64_t batch = std::max<int64_t>(
+      1, static_cast<int64_t>((size_t{64} << 20) / std::max<size_t>(chunk_bytes, 1)));
+  std::vector<std::vector<unsigned char>> compressed(static_cast<size_t>(batch));
   std::vector<hsize_t> offset(shape.size(), 0);
-  for (int64_t first = 0; first < chunks; first += kBatch) {
-    const int64_t count = std::min(kBatch, chunks - first);
+  for (int64_t first = 0; first < chunks; first += batch) {
+    const int64_t count = std::min(batch, chunks - first);
 #pragma omp parallel for schedule(dynamic)
     for (int64_t c = 0; c < count; ++c) {
       // The edge chunk padded with zeros to a whole chunk, as HDF5 filters it.
