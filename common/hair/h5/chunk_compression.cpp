@@ -38,7 +38,10 @@ DeflatePiece deflate_piece(const unsigned char* data, size_t size, bool last, un
 }  // namespace
 
 int piece_deflate_level(const unsigned char* data, size_t size, unsigned level) {
-  const size_t sample = std::min(size, kStoreSampleBytes);
+  // A quarter of a small piece at most, so that deflating a piece that shrinks costs
+  // little more than once.
+  const size_t sample =
+      std::min(kStoreSampleBytes, std::max(size / 4, std::min(size, size_t{4096})));
   if (sample == 0) return static_cast<int>(level);
   std::vector<unsigned char> out(compressBound(static_cast<uLong>(sample)));
   uLongf out_size = static_cast<uLongf>(out.size());

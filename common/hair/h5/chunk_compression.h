@@ -16,7 +16,8 @@ inline constexpr double kStoreBelowSaving = 0.05;
 inline constexpr size_t kStoreSampleBytes = size_t{32} << 10;
 
 /// Deflate level for a piece of shuffled bytes: 0 (stored) where its first
-/// kStoreSampleBytes do not shrink by kStoreBelowSaving at `level`, else `level`. The low
+/// kStoreSampleBytes (a quarter of a piece under 128 KiB, at least 4 KiB) do not shrink by
+/// kStoreBelowSaving at `level`, else `level`. The low
 /// bytes of float coordinates (the first half of a shuffled chunk) are noise: deflate
 /// spent most of a frame's time on them and saved nothing.
 int piece_deflate_level(const unsigned char* data, size_t size, unsigned level);
