@@ -85,4 +85,12 @@ std::vector<unsigned char> zlib_stream_in_pieces(const unsigned char* bytes, siz
   return stream;
 }
 
+std::vector<unsigned char> shuffled_zlib_chunk(const unsigned char* values, size_t count,
+                                               size_t value_size, size_t piece_bytes,
+                                               unsigned level) {
+  std::vector<unsigned char> shuffled(count * value_size);
+  shuffle_bytes(values, count, value_size, shuffled.data());
+  return zlib_stream_in_pieces(shuffled.data(), shuffled.size(), piece_bytes, level);
+}
+
 }  // namespace hair::h5

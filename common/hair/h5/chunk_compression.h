@@ -32,4 +32,10 @@ void shuffle_bytes(const unsigned char* values, size_t count, size_t value_size,
 std::vector<unsigned char> zlib_stream_in_pieces(const unsigned char* bytes, size_t size,
                                                  size_t piece_bytes, unsigned level);
 
+/// A chunk as HDF5's shuffle + deflate filters would store it: `count` values of
+/// `value_size` bytes shuffled, then zlib_stream_in_pieces() of them; empty on failure.
+std::vector<unsigned char> shuffled_zlib_chunk(const unsigned char* values, size_t count,
+                                               size_t value_size, size_t piece_bytes,
+                                               unsigned level);
+
 }  // namespace hair::h5

@@ -153,15 +153,20 @@ bool write_row_chunks(hid_t dataset, hid_t stored_type, hid_t memory_type, const
     const int64_t count = std::min(batch, chunks - first);
 #pragma omp parallel for schedule(dynamic)
     for (int64_t c = 0; c < count; ++c) {
-      // The edge chunk padded with zeros to a whole chunk, as HDF5 filters it.
+      // The edge chunk padded with zeros to a whole chunk, as HDF5 filters it; the others
+      // read in place. One piece per byte plane, so that the planes of noise are stored.
       const int64_t row0 = (first + c) * chunk_rows;
       const auto filled = static_cast<size_t>(std::min(chunk_rows, rows - row0)) * row_bytes;
-      std::vector<unsigned char> padded(chunk_bytes, 0), shuffled(chunk_bytes);
-      std::memcpy(padded.data(), bytes + static_cast<size_t>(row0) * row_bytes, filled);
-      shuffle_bytes(padded.data(), chunk_bytes / element_bytes, element_bytes, shuffled.data());
-      // One piece per byte plane, so that the planes of noise are stored.
-      compressed[static_cast<size_t>(c)] = zlib_stream_in_pieces(
-          shuffled.data(), chunk_bytes, chunk_bytes / element_bytes, kDeflateLevel);
+      const unsigned char* chunk_values = bytes + static_cast<size_t>(row0) * row_bytes;
+      std::vector<unsigned char> padded;
+      if (filled < chunk_bytes) {
+        padded.assign(chunk_bytes, 0);
+        std::memcpy(padded.data(), chunk_values, filled);
+        chunk_values = padded.data();
+      }
+      compressed[static_cast<size_t>(c)] =
+          shuffled_zlib_chunk(chunk_values, chunk_bytes / element_bytes, element_bytes,
+                              chunk_bytes / element_bytes, kDeflateLevel);
     }
     for (int64_t c = 0; c < count; ++c) {
       const std::vector<unsigned char>& data = compressed[static_cast<size_t>(c)];

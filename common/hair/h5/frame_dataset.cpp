@@ -40,11 +40,9 @@ void FrameDatasetWriter::write(int64_t frame, const std::vector<float>& values) 
                 "cannot write frame " + std::to_string(frame) + " of " + std::to_string(frames_) +
                     " from " + std::to_string(values.size()) + " values");
   if (rows_ == 0 || columns_ == 0) return;
-  std::vector<unsigned char> shuffled(values.size() * sizeof(float));
-  shuffle_bytes(reinterpret_cast<const unsigned char*>(values.data()), values.size(), sizeof(float),
-                shuffled.data());
-  std::vector<unsigned char> chunk = zlib_stream_in_pieces(
-      shuffled.data(), shuffled.size(), kFrameDeflatePieceBytes, kFrameDeflateLevel);
+  std::vector<unsigned char> chunk =
+      shuffled_zlib_chunk(reinterpret_cast<const unsigned char*>(values.data()), values.size(),
+                          sizeof(float), kFrameDeflatePieceBytes, kFrameDeflateLevel);
   std::array<hsize_t, 3> offset = {static_cast<hsize_t>(frame), 0, 0};
   if (chunk.empty() ||
       H5Dwrite_chunk(dataset_.get(), H5P_DEFAULT, 0, offset.data(), chunk.size(), chunk.data()) < 0)
