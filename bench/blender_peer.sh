@@ -74,7 +74,7 @@ inside = "" if c["last_frame_share_inside_body"] is None else ", %.1f%% inside b
 print(" (%s: keys %.1g m off, tips moved %.0f mm%s)" % ("ok" if c["passed"] else "CHECK FAILED", c["frame1_max_key_error_m"], 1e3 * c["last_frame_tip_offset_m_median"], inside))' "$work/result.json"
 }
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load average $(cut -d' ' -f1-3 /proc/loadavg); OMP_WAIT_POLICY=$OMP_WAIT_POLICY; $("$blender" --version 2>/dev/null | head -n 1); $threads threads; median of $runs runs; $keys keys per Blender hair; motion shake; parameters $params."
+echo "Machine: $(nproc) cores, $(cpu_name); load average $(cut -d' ' -f1-3 /proc/loadavg); OMP_WAIT_POLICY=$OMP_WAIT_POLICY; $("$blender" --version 2>/dev/null | head -n 1); $threads threads; median of $runs runs; $keys keys per Blender hair; motion shake; parameters $params."
 echo
 echo "| model | strands | our points per guide (mean) | ours ms/frame, no collisions | ours ms/frame, body collisions | Blender ms/frame, no collisions | Blender ms/frame, body collisions |"
 echo "|---|---|---:|---:|---:|---:|---:|"

@@ -36,7 +36,7 @@ styles() {
     awk '$1 != "none" { printf "%s%s (%s)", (n++ ? ", " : ""), $1, $2 }'
 }
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); classify --threads $threads; median of $runs runs; model $model_file; parameters $params."
+echo "Machine: $(nproc) cores, $(cpu_name); classify --threads $threads; median of $runs runs; model $model_file; parameters $params."
 echo
 table="| model | clusters | classify (ms) | deterministic | hand labels | random forest (strands) | SVM (strands) |
 |---|---:|---:|---|---|---|---|"

@@ -17,6 +17,7 @@
 # scipy, h5py and scikit-learn).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source bench/common.sh
 
 makehuman=${1:-../shared/data/makehuman}
 body=data/samples/body.obj
@@ -38,9 +39,8 @@ bin=$work/bin
 "$python" -c 'import h5py, numpy, scipy, sklearn' 2>/dev/null ||
   { echo "cluster_compare: $python lacks numpy, scipy, h5py or scikit-learn (set PYTHON)" >&2; exit 1; }
 
-median() { sort -g | awk '{v[NR]=$1} END {print (NR%2 ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2)}'; }
-
-# time_ms COMMAND...: median wall time of RUNS runs of the command, in ms.
+# time_ms COMMAND...: median wall time of RUNS runs of the command, in ms, to 0.1 ms
+# (common.sh's to 1 ms), with hyperfine where it is installed.
 time_ms() {
   if command -v hyperfine >/dev/null; then
     local quoted
@@ -138,7 +138,7 @@ rule="|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"
 if command -v hyperfine >/dev/null; then method="hyperfine, median of $runs runs after 1 warm-up run"
 else method="shell loop, median of $runs runs"; fi
 version=$(cat "${BIN:-build/bin}/hairstyle-version.txt" 2>/dev/null || git describe --always --dirty 2>/dev/null || echo unknown)
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load average $(cut -d ' ' -f 1-3 /proc/loadavg)."
+echo "Machine: $(nproc) cores, $(cpu_name); load average $(cut -d ' ' -f 1-3 /proc/loadavg)."
 echo "Binaries: $version; stages with --threads $threads; stage times are wall clock of the whole binary (read, graph, clustering, write), $method."
 echo "scikit-learn $("$python" -c 'import sklearn; print(sklearn.__version__)'), scipy $("$python" -c 'import scipy; print(scipy.__version__)') ($python)."
 echo

@@ -48,3 +48,19 @@ pipeline_to_styles() {
   "$bin/grow" "$dir/extract.h5" "$dir/types.h5" "$dir/clusters.h5" -o "$dir/strands.h5" --params "$params/grow.toml" --quiet "$@"
   "$bin/classify" "$dir/extract.h5" "$dir/clusters.h5" "$dir/strands.h5" --model "$model_file" -o "$dir/styles.h5" --params "$params/classify.toml" --quiet
 }
+
+# cpu_name: the processor as /proc/cpuinfo names it, with its family and model (a cloud
+# "AMD EPYC" is several generations: family 25 is Zen 3 and 4, family 26 Zen 5) and
+# whether it has AVX-512, so that figures from different machines are not compared as
+# if from one.
+cpu_name() {
+  awk -F': *' '
+    $1 ~ /^model name/ && !name { name = $2 }
+    $1 ~ /^cpu family/ && !family { family = $2 }
+    $1 ~ /^model[ \t]*$/ && !model { model = $2 }
+    $1 ~ /^flags/ && !flags { flags = " " $2 " " }
+    END {
+      printf "%s (family %s, model %s%s)\n", name, family, model,
+        (index(flags, " avx512f ") ? ", AVX-512" : (index(flags, " avx2 ") ? ", AVX2" : ""))
+    }' /proc/cpuinfo
+}

@@ -18,7 +18,7 @@ trap 'rm -rf "$work"' EXIT
 
 source bench/common.sh
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); extract --threads $threads; median of $runs runs."
+echo "Machine: $(nproc) cores, $(cpu_name); extract --threads $threads; median of $runs runs."
 echo
 echo "| model | vertices | groups | strands | points | vertex_order | scalp_distance | continuation | uv | height | parting | time (ms) |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"

@@ -10,6 +10,7 @@
 # --threads, default 0 = all cores).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source bench/common.sh
 
 makehuman=../shared/data/makehuman
 hair=${1:-$makehuman/hair/bob01.obj}
@@ -28,7 +29,7 @@ command=("$bin/extract" "$hair" --body "$body" --unit_scale 0.1 --quiet --thread
          -o "$work/extract.h5")
 "${command[@]}"  # once, to check that it works and to warm the file cache
 
-cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
+cpu=$(cpu_name)
 echo "machine:  $(nproc) cores, ${cpu:-unknown CPU}; load average $(cut -d ' ' -f 1-3 /proc/loadavg)"
 echo "extract:  $bin/extract at $(git describe --always --dirty 2>/dev/null || echo unknown)," \
      "--threads $threads"

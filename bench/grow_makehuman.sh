@@ -25,7 +25,7 @@ source bench/common.sh
 copy_binaries grow_makehuman "$work" extract typeify cluster-middle cluster-all grow hair-grow-report hair-render
 bin=$work/bin
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); grow --threads $threads; median of $runs runs; parameters $params."
+echo "Machine: $(nproc) cores, $(cpu_name); grow --threads $threads; median of $runs runs; parameters $params."
 echo
 timings="| model | input groups | clusters | grow (ms) | deterministic |
 |---|---:|---:|---:|---|"

@@ -39,7 +39,7 @@ method_counts() {
     sort | uniq -c | awk '{n[$2]=$1} END {printf "%d / %d / %d / %d\n", n["fixed"], n["barycentric"], n["clump"], n["braided"]}'
 }
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load average $(cut -d' ' -f1-3 /proc/loadavg) at the start; median of $runs runs; parameters $params; style model $model_file; frames $frames of ${duration} s of the default motion."
+echo "Machine: $(nproc) cores, $(cpu_name), load average $(cut -d' ' -f1-3 /proc/loadavg) at the start; median of $runs runs; parameters $params; style model $model_file; frames $frames of ${duration} s of the default motion."
 echo
 echo "| model | strands | points | fixed / barycentric / clump / braided | max deviation at rest (m) | ms/frame, 1 thread | ms/frame, 2 threads |"
 echo "|---|---:|---:|---|---:|---:|---:|"

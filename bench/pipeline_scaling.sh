@@ -104,7 +104,7 @@ cp "$csv" "$out/pipeline.csv"
 {
   echo "# Pipeline timings and scaling"
   echo
-  echo "\`bench/pipeline_scaling.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); --threads $threads; wall time of each stage's whole process (reading, work, writing), median of $runs runs (one run at $large strands and more); parameters $params; simulate: the default motion and its one cycle; interpolate: frames $frames."
+  echo "\`bench/pipeline_scaling.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(cpu_name); --threads $threads; wall time of each stage's whole process (reading, work, writing), median of $runs runs (one run at $large strands and more); parameters $params; simulate: the default motion and its one cycle; interpolate: frames $frames."
   echo
   /usr/bin/python3 bench/pipeline_scaling_report.py "$out/pipeline.csv" "$out/pipeline_scaling.png"
 } >"$work/pipeline.md"

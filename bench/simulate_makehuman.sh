@@ -38,7 +38,7 @@ count() { h5ls "$1$2" | sed 's/.*{\([0-9]*\).*/\1/'; }
 # words FILE DATASET: the values of an enum dataset, comma-separated.
 words() { h5dump -d "$2" "$1" | sed -n '/DATA {/,/}/p' | grep -o '[a-z]\+' | grep -v '^data$' | paste -sd, | sed 's/,/, /g'; }
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); median of $runs runs; parameters $params; style model $model_file."
+echo "Machine: $(nproc) cores, $(cpu_name); median of $runs runs; parameters $params; style model $model_file."
 echo
 speed="| model | setting | motion | guides | particles (hair + ghost) | ms/frame, 1 thread | ms/frame, 2 threads | largest stretch | deepest in body before the push (mm) | most left inside at a frame's end | setup (s) |
 |---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"

@@ -45,7 +45,7 @@ done
 
 echo "# What the skips save"
 echo
-echo "\`bench/skips.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); --threads $threads; wall time of each stage's whole process, median of $runs runs; parameters $params; 10,000 grown strands."
+echo "\`bench/skips.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(cpu_name); --threads $threads; wall time of each stage's whole process, median of $runs runs; parameters $params; 10,000 grown strands."
 echo
 echo "## No middle groups: cluster-middle"
 echo

@@ -91,7 +91,7 @@ row() {
 header="largest stretch | most left inside | deepest before the push (mm) | fastest particle (m/s) | largest total energy (J) | spring deformation (mm) | kinetic growth | verdict"
 rule="---:|---:|---:|---:|---:|---:|---:|---"
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $threads threads; parameters $params; style model $model_file; $(date -u +%Y-%m-%d)."
+echo "Machine: $(nproc) cores, $(cpu_name); $threads threads; parameters $params; style model $model_file; $(date -u +%Y-%m-%d)."
 echo
 
 # 1. Time steps: the default (30 fps, 2 substeps), then one step per frame (--substeps 1)

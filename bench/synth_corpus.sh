@@ -8,6 +8,7 @@
 # Environment: BUILD (default build), JOBS (default nproc).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source bench/common.sh
 
 count=${1:-60}
 build=${BUILD:-build}
@@ -15,7 +16,7 @@ jobs=${JOBS:-$(nproc)}
 work=$(mktemp -d "${TMPDIR:-/tmp}/synth_corpus.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "Machine: $(nproc) cores, $(cpu_name)"
 start=$(date +%s%N)
 "$build/bin/hair-synth" corpus --count "$count" -o "$work/data/hair" --reproducible 2>/dev/null
 echo "hair-synth corpus --count $count: $(( ($(date +%s%N) - start) / 1000000 )) ms, $(du -sh "$work/data/hair" | cut -f1)"

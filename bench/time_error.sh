@@ -129,7 +129,7 @@ cp "$csv" "$out/time_error.csv"
 {
   echo "# Run time against error"
   echo
-  echo "\`bench/time_error.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $threads threads; medians of $runs runs; motion $motion for $duration_s s at 30 fps; $strand_count grown strands per model; references: every strand a guide, $ref_substeps substeps per frame, the style rules off (full) or on (by style)."
+  echo "\`bench/time_error.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(cpu_name); $threads threads; medians of $runs runs; motion $motion for $duration_s s at 30 fps; $strand_count grown strands per model; references: every strand a guide, $ref_substeps substeps per frame, the style rules off (full) or on (by style)."
   echo
   cat "$out/time_error.md.body"
 } >"$out/time_error.md"
