@@ -435,12 +435,37 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   };
   // Each strand's share of a frame's statistics, in parallel; summed in strand order, so
   // the sums do not depend on the thread count.
+  // The elastic energy's share of a strand's springs (anchors excluded) is what the next
+  // frame's first step evaluates its springs at, so it is read off that step
+  // (StrandStepper::start_spring_energy_j(), bit for bit) rather than evaluated here
+  // again: the frame's statistics leave it pending until then, or work it out at once
+  // where no step follows (the last frame, a settled head).
   struct StrandShare {
-    double kinetic_j = 0, gravity_j = 0, elastic_j = 0, max_speed_m_s = 0, strain = 0,
+    double kinetic_j = 0, gravity_j = 0, anchor_j = 0, max_speed_m_s = 0, strain = 0,
            penetration_m = 0;
     int64_t inside = 0, hair = 0;
   };
   std::vector<StrandShare> shares(running.size());
+  std::vector<double> spring_j(running.size());
+  // The frame whose statistics wait for their springs' energy (shares[g].anchor_j kept
+  // for it), or -1.
+  int32_t pending_energy_frame = -1;
+  auto settle_pending_energy = [&] {
+    if (pending_energy_frame < 0) return;
+    double elastic_j = 0;
+    for (size_t g = 0; g < running.size(); ++g) elastic_j += spring_j[g] + shares[g].anchor_j;
+    result.statistics[static_cast<size_t>(pending_energy_frame)].elastic_energy_j = elastic_j;
+    pending_energy_frame = -1;
+  };
+  // At the present positions, for a frame no step follows.
+  auto spring_energy_now = [&] {
+    if (pending_energy_frame < 0) return;
+#pragma omp parallel for schedule(dynamic, 4) if (running.size() >= 32)
+    for (size_t g = 0; g < running.size(); ++g)
+      spring_j[g] =
+          strand_spring_energy(running[g].model, params.material, running[g].state.position_m);
+    settle_pending_energy();
+  };
   auto frame_statistics = [&](double time_s, const RigidTransform& pose) {
 #pragma omp parallel for schedule(dynamic, 4) if (running.size() >= 32)
     for (size_t g = 0; g < running.size(); ++g) {
@@ -458,7 +483,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
           share.max_speed_m_s =
               std::max(share.max_speed_m_s, (x[k] - strand.frame_start_m[k]).norm() * params.fps);
       }
-      share.elastic_j = strand_elastic_energy(strand.model, params.material, x, strand.anchors);
+      share.anchor_j = anchor_elastic_energy(strand.model, params.material, x, strand.anchors);
       share.strain = std::abs(max_hair_strain(strand.model, x));
       share.penetration_m = strand.penetration_m;
       strand.penetration_m = 0;
@@ -477,7 +502,6 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     for (const StrandShare& share : shares) {
       stats.kinetic_energy_j += share.kinetic_j;
       stats.gravity_energy_j += share.gravity_j;
-      stats.elastic_energy_j += share.elastic_j;
       stats.max_speed_m_s = std::max(stats.max_speed_m_s, share.max_speed_m_s);
       stats.max_stretch = std::max(stats.max_stretch, share.strain);
       stats.max_penetration_m = std::max(stats.max_penetration_m, share.penetration_m);
@@ -491,6 +515,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
 
   record_frame(0, head);
   result.statistics.push_back(frame_statistics(0, head));
+  pending_energy_frame = 0;
   result.setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
   spdlog::info(
@@ -551,9 +576,11 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
                   model.hair_particle[static_cast<size_t>(i)])] = repulsion(strand, i, previous);
           }
           BodyCollider collider(*body, previous, next, clearance_m, dt_s);
-          steppers[static_cast<size_t>(omp_get_thread_num())].step(
-              model, params.material, strand.acceleration_m_s2, gravity, strand.anchors, dt_s,
-              strand.state, params.body_collisions ? &collider : nullptr, params.friction);
+          StrandStepper& stepper = steppers[static_cast<size_t>(omp_get_thread_num())];
+          stepper.step(model, params.material, strand.acceleration_m_s2, gravity, strand.anchors,
+                       dt_s, strand.state, params.body_collisions ? &collider : nullptr,
+                       params.friction);
+          if (step == 0) spring_j[g] = stepper.start_spring_energy_j();
           strand.penetration_m = std::max(strand.penetration_m, collider.deepest_m());
           for (int32_t q = 0; q < model.kinematic_count; ++q) {
             auto k = static_cast<size_t>(q);
@@ -575,6 +602,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
               "simulation: frame " + std::to_string(frame) + ", guide " + std::to_string(g) +
                   ": a position or velocity is not finite (or diverged beyond 1000 H)");
       }
+      if (step == 0) settle_pending_energy();
       previous = next;
     }
     // The anchors where the frame's statistics measure their springs: at its end.
@@ -584,10 +612,12 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     record_frame(frame, pose);
     FrameStatistics stats = frame_statistics(frame / params.fps, pose);
     result.statistics.push_back(stats);
+    pending_energy_frame = frame;
     if (still) {
       quiet_frames = stats.max_speed_m_s < params.settle_speed_h_s * h ? quiet_frames + 1 : 0;
       if (quiet_frames >= params.settle_frames) {
         result.settled_at_frame = frame + 1;
+        spring_energy_now();  // before the frames that repeat this one copy its statistics
         spdlog::info(
             "{}: the head is still and the hair settled at frame {}; the remaining {} "
             "frames repeat it",
@@ -595,6 +625,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
       }
     }
   }
+  spring_energy_now();
   if (result.settled_at_frame >= result.frame_count) result.settled_at_frame = -1;
   result.simulation_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - simulation_start).count();

@@ -96,6 +96,12 @@ void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& materia
   }
 }
 
+/// A spring's elastic energy, k (l - L)^2 / 2.
+double spring_energy(const LinearSpring& spring) {
+  const double stretch = spring.length_m - spring.rest_length_m;
+  return 0.5 * spring.stiffness * stretch * stretch;
+}
+
 /// Brings each free ghost's distances to its two hair neighbours (its edge springs)
 /// within `max_stretch` of their rest lengths, keeping its angle about their segment.
 /// The springs alone do not hold a ghost: linearised along their directions at the start
@@ -140,20 +146,31 @@ void limit_ghosts(const AltitudeStrand& strand, const StrandMaterial& material,
 
 }  // namespace
 
-double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+double strand_spring_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                            const std::vector<Vec3>& position_m) {
+  double energy = 0;
+  for_each_spring(strand, material, position_m,
+                  [&](const LinearSpring& spring) { energy += spring_energy(spring); });
+  return energy;
+}
+
+double anchor_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
                              const std::vector<Vec3>& position_m,
                              const std::vector<StrandAnchor>& anchors) {
   double energy = 0;
-  for_each_spring(strand, material, position_m, [&](const LinearSpring& spring) {
-    double stretch = spring.length_m - spring.rest_length_m;
-    energy += 0.5 * spring.stiffness * stretch * stretch;
-  });
   double anchor_stiffness = material.anchor_stiffness_per_kg * strand.mass_kg[0];
   for (const StrandAnchor& anchor : anchors) {
     double stretch = (position_m[0] - anchor.position_m).norm() - anchor.rest_length_m;
     energy += 0.5 * anchor_stiffness * stretch * stretch;
   }
   return energy;
+}
+
+double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Vec3>& position_m,
+                             const std::vector<StrandAnchor>& anchors) {
+  return strand_spring_energy(strand, material, position_m) +
+         anchor_elastic_energy(strand, material, position_m, anchors);
 }
 
 double max_hair_strain(const AltitudeStrand& strand, const std::vector<Vec3>& position_m) {
@@ -249,7 +266,9 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
         }
       }
     };
+    start_spring_energy_j_ = 0;
     for_each_spring(strand, material, x, [&](const LinearSpring& spring) {
+      start_spring_energy_j_ += spring_energy(spring);
       if (spring.count == 2 && spring.particle[0] >= first_free) {
         // Most springs: two free particles, weights -1 and 1 (add_spring, unrolled).
         const int32_t qa = spring.particle[0], qb = spring.particle[1];
@@ -309,6 +328,8 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
           Vec3(rhs_[static_cast<size_t>(row0)], rhs_[static_cast<size_t>(row0 + 1)],
                rhs_[static_cast<size_t>(row0 + 2)]);
     }
+  } else {
+    start_spring_energy_j_ = strand_spring_energy(strand, material, x);
   }
 
   // Positions, then two passes over the hair segments from the root out.

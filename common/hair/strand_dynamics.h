@@ -45,8 +45,18 @@ struct StrandAnchor {
 
 /// The elastic energy of the strand's springs at `position_m`: sum of k (l - L)^2 / 2
 /// over two-particle springs, the altitude of each tetrahedron (the most robust one)
-/// and the anchors, joules.
+/// and the anchors, joules: strand_spring_energy() + anchor_elastic_energy().
 double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Eigen::Vector3d>& position_m,
+                             const std::vector<StrandAnchor>& anchors);
+
+/// The part of strand_elastic_energy() in the strand's own springs (anchors excluded),
+/// joules; what StrandStepper::start_spring_energy_j() reports of a step's start.
+double strand_spring_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                            const std::vector<Eigen::Vector3d>& position_m);
+
+/// The part of strand_elastic_energy() in the springs to the anchors, joules.
+double anchor_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
                              const std::vector<Eigen::Vector3d>& position_m,
                              const std::vector<StrandAnchor>& anchors);
 
@@ -97,7 +107,14 @@ class StrandStepper {
             const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state,
             const StrandCollider* collider = nullptr, double friction = 0);
 
+  /// strand_spring_energy() at the positions the last step() started from, bit for bit:
+  /// the step evaluates every spring there, so the energy costs it one multiply-add per
+  /// spring (a simulation reads a frame's end state's energy off the next frame's first
+  /// step instead of evaluating the springs again).
+  double start_spring_energy_j() const { return start_spring_energy_j_; }
+
  private:
+  double start_spring_energy_j_ = 0;
   std::vector<double> band_;  ///< LAPACK upper band storage, column-major
   std::vector<double> rhs_;
   std::vector<Eigen::Vector3d> start_;         ///< positions at the start of the step

@@ -253,6 +253,29 @@ TEST(HairSimulation, TwoRunsAndThreadCountsAgreeBitForBit) {
   EXPECT_EQ(one.wisp_frames, two.wisp_frames);
 }
 
+TEST(HairSimulation, ElasticEnergyReadOffTheNextStepEqualsItWorkedOutAtTheEnd) {
+  // A frame's elastic energy comes from the next frame's first step, or is worked out at
+  // the frame's end when it is the last: a run cut short at frame 6 works out that frame's
+  // directly, and must agree with the longer run, bit for bit (the braid's wisp centre
+  // has anchors, the rest not).
+  SimulationScene scene = make_scene();
+  HeadMotion motion = HeadMotion::preset("violent_shake", kPivot);
+  SimulationParams params = test_params();
+  params.duration_s = 0.5;
+  SimulationResult longer = simulate_hair(scene, motion, params);
+  params.duration_s = 0.2;
+  SimulationResult shorter = simulate_hair(scene, motion, params);
+  ASSERT_EQ(shorter.frame_count, 7);
+  for (size_t frame = 0; frame < 7; ++frame) {
+    EXPECT_EQ(shorter.statistics[frame].elastic_energy_j, longer.statistics[frame].elastic_energy_j)
+        << "frame " << frame;
+    if (frame > 0) {
+      EXPECT_GT(longer.statistics[frame].elastic_energy_j, 0) << "frame " << frame;
+    }
+  }
+  EXPECT_GT(longer.statistics.back().elastic_energy_j, 0);
+}
+
 TEST(HairSimulation, StillHeadSettlesAndStopsEarly) {
   SimulationScene scene = make_scene();
   SimulationParams params = test_params();
@@ -263,6 +286,11 @@ TEST(HairSimulation, StillHeadSettlesAndStopsEarly) {
   const auto& first_skipped = result.statistics[static_cast<size_t>(result.settled_at_frame)];
   EXPECT_FALSE(first_skipped.integrated);
   EXPECT_TRUE(result.statistics[static_cast<size_t>(result.settled_at_frame) - 1].integrated);
+  // They repeat its statistics, its elastic energy too (worked out as it settled, with
+  // no next step to read it off).
+  const auto& last_integrated = result.statistics[static_cast<size_t>(result.settled_at_frame) - 1];
+  EXPECT_GT(last_integrated.elastic_energy_j, 0);
+  EXPECT_EQ(result.statistics.back().elastic_energy_j, last_integrated.elastic_energy_j);
   // Later frames repeat the last integrated one.
   size_t points = result.guide_points_m.size() / 3 / static_cast<size_t>(result.frame_count);
   for (size_t row = 0; row < points; ++row)

@@ -147,6 +147,26 @@ TEST(StrandDynamics, HangingStrandSettlesWithItsLength) {
   EXPECT_NEAR(tip.x(), 0, 0.002);  // 0.5% of its length sideways
 }
 
+TEST(StrandDynamics, AStepReportsTheSpringEnergyOfWhereItStarted) {
+  // A falling horizontal strand: every step starts somewhere new, its springs stretched.
+  AltitudeStrand strand = build_altitude_strand(straight_strand(Vec3(1, 0, 0), 15, 0.3), 1e-3);
+  StrandMaterial material;
+  material.bend_stiffness_per_kg = 50;
+  StrandState state = rest_state(strand);
+  StrandStepper stepper;
+  double largest = 0;
+  for (int i = 0; i < 60; ++i) {
+    const std::vector<Vec3> start = state.position_m;
+    stepper.step(strand, material, {}, kGravity, {}, 1.0 / 120, state);
+    const double expected = strand_spring_energy(strand, material, start);
+    ASSERT_EQ(stepper.start_spring_energy_j(), expected) << "step " << i;
+    // The anchors' part is separate: with none, the two energies are one.
+    ASSERT_EQ(strand_elastic_energy(strand, material, start, {}), expected);
+    largest = std::max(largest, expected);
+  }
+  EXPECT_GT(largest, 0);  // the strand bent
+}
+
 TEST(StrandDynamics, HorizontalStrandFallsSwingsAndDampsOut) {
   // Released horizontal: it swings down; with damping its energy decays.
   AltitudeStrand strand = build_altitude_strand(straight_strand(Vec3(1, 0, 0), 15, 0.3), 1e-3);
