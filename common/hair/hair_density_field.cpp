@@ -161,6 +161,102 @@ Vec3 HairDensityField::gradient_per_cell_without(const Vec3& point_m,
   return gradient;
 }
 
+namespace {
+
+/// A splat's weight along one axis at a sample in cell `cell` at `fraction` (the factor
+/// self_density() multiplies per axis): over the sample's two corners d, the splat's
+/// corner e = d + cell - splat_cell where it is 0 or 1.
+double axis_overlap(int cell, double fraction, int splat_cell, double splat_fraction) {
+  double sum = 0;
+  for (int d = 0; d < 2; ++d) {
+    const int e = d + cell - splat_cell;
+    if (e < 0 || e > 1) continue;
+    sum += (d ? fraction : 1 - fraction) * (e ? splat_fraction : 1 - splat_fraction);
+  }
+  return sum;
+}
+
+}  // namespace
+
+HairDensityField::SampleWithout HairDensityField::sample_without(
+    const Vec3& point_m, std::span<const Vec3> own_m) const {
+  SampleWithout sample;
+  if (values_.empty() || !((point_m - origin_m_) / cell_m_).allFinite()) return sample;
+  std::array<Located, kMaxOwn> storage;
+  const std::span<const Located> own = locate_own(own_m, storage);
+  const Located point = locate(point_m);
+  // Per axis, the cell and fraction of the gradient's lower sample, half a cell below the
+  // point; its upper sample is in the next cell, at the same fraction.
+  Eigen::Vector3i lower;
+  Vec3 lower_fraction;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double u = point.cell[axis] + point.fraction[axis] - 0.5;
+    lower[axis] = static_cast<int>(std::floor(u));
+    lower_fraction[axis] = u - lower[axis];
+  }
+  if ((lower.array() < 0).any() || (lower.array() + 3 > dims_.array()).any()) {
+    sample.density = density_without(point_m, own_m);
+    sample.gradient_per_cell = gradient_per_cell_without(point_m, own_m);
+    return sample;
+  }
+  // The values of cells lower to lower + 2 per axis, x fastest, and where the point's own
+  // cell starts among them (0 or 1 per axis).
+  const size_t stride_y = static_cast<size_t>(dims_.x());
+  const size_t stride_z = stride_y * static_cast<size_t>(dims_.y());
+  const double* base = values_.data() + static_cast<size_t>(lower.x()) +
+                       stride_y * static_cast<size_t>(lower.y()) +
+                       stride_z * static_cast<size_t>(lower.z());
+  double near[27];
+  for (size_t z = 0; z < 3; ++z)
+    for (size_t y = 0; y < 3; ++y)
+      for (size_t x = 0; x < 3; ++x)
+        near[x + 3 * y + 9 * z] = base[x + stride_y * y + stride_z * z];
+  constexpr int kStride[3] = {1, 3, 9};
+  const Eigen::Vector3i start = point.cell - lower;
+  const int own_cell = start.x() + 3 * start.y() + 9 * start.z();
+  const Vec3& f = point.fraction;
+  const double w[3][2] = {{1 - f.x(), f.x()}, {1 - f.y(), f.y()}, {1 - f.z(), f.z()}};
+  // The density as density_at() sums it.
+  for (int corner = 0; corner < 8; ++corner) {
+    const int dx = corner & 1, dy = (corner >> 1) & 1, dz = (corner >> 2) & 1;
+    sample.density += w[0][dx] * w[1][dy] * w[2][dz] * near[own_cell + dx + 3 * dy + 9 * dz];
+  }
+  // Along each axis, over the point's four corners across it: the lower sample's two
+  // corners' differences to the next, weighted by its fraction.
+  for (int axis = 0; axis < 3; ++axis) {
+    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+    const double g = lower_fraction[axis];
+    const int row = own_cell - start[axis] * kStride[axis];  // lower's cell along the axis
+    double sum = 0;
+    for (int corner = 0; corner < 4; ++corner) {
+      const int db = corner & 1, dc = corner >> 1;
+      const double* along = near + row + db * kStride[b] + dc * kStride[c];
+      const double first = along[0], second = along[kStride[axis]],
+                   third = along[2 * kStride[axis]];
+      sum += w[b][db] * w[c][dc] * ((1 - g) * (second - first) + g * (third - second));
+    }
+    sample.gradient_per_cell[axis] = sum;
+  }
+  // The own splats out: their weights at the point, and the differences of their weights
+  // at the two samples along each axis (the other axes' factors are the point's).
+  for (const Located& splat : own) {
+    Vec3 centre, rise;
+    for (int axis = 0; axis < 3; ++axis) {
+      centre[axis] =
+          axis_overlap(point.cell[axis], f[axis], splat.cell[axis], splat.fraction[axis]);
+      rise[axis] =
+          axis_overlap(lower[axis] + 1, lower_fraction[axis], splat.cell[axis],
+                       splat.fraction[axis]) -
+          axis_overlap(lower[axis], lower_fraction[axis], splat.cell[axis], splat.fraction[axis]);
+    }
+    sample.density -= 1 * centre.x() * centre.y() * centre.z();
+    sample.gradient_per_cell -=
+        Vec3(rise.x() * centre.y() * centre.z(), centre.x() * rise.y() * centre.z(),
+             centre.x() * centre.y() * rise.z());
+  }
+  return sample;
+}
+
 double HairDensityField::mean_occupied_density() const {
   double sum = 0;
   int64_t occupied = 0;

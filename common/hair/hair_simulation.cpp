@@ -387,14 +387,16 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     }
     std::span<const Vec3> mine(own.data(), count), mine_at_rest(own_rest.data(), count);
     const Vec3& position_m = own[static_cast<size_t>(i - std::max(0, i - 1))];
-    Vec3 rest_point = pose.apply_inverse(position_m);
-    double excess = density.density_without(position_m, mine) -
-                    rest_density.density_without(rest_point, mine_at_rest);
+    // Each field's density and gradient in one pass: the gradients are wanted for about
+    // half the particles that get this far, and cost little beside the densities.
+    const HairDensityField::SampleWithout now = density.sample_without(position_m, mine);
+    const HairDensityField::SampleWithout at_rest =
+        rest_density.sample_without(pose.apply_inverse(position_m), mine_at_rest);
+    double excess = now.density - at_rest.density;
     // A dead band of one typical cell's worth of hair, so that hair that has merely
     // sagged a little is left alone, and the force faded in over the next.
     if (!(excess > reference_density)) return Vec3::Zero();
-    Vec3 gradient = density.gradient_per_cell_without(position_m, mine) -
-                    pose.rotate(rest_density.gradient_per_cell_without(rest_point, mine_at_rest));
+    Vec3 gradient = now.gradient_per_cell - pose.rotate(at_rest.gradient_per_cell);
     double fade = std::min(1.0, excess / reference_density - 1);
     return -params.repulsion_m_s2 * fade * gradient / reference_density;
   };

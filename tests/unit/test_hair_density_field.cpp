@@ -70,6 +70,39 @@ TEST(HairDensityField, OwnSplatsAreTakenOutExactly) {
   }
 }
 
+TEST(HairDensityField, OnePassSampleAgreesWithTheTwoCalls) {
+  // A crowd, sampled at random points inside it, near and beyond the grid's edge, with a
+  // particle's own splats (itself and its neighbours) taken out.
+  std::mt19937 random(7);
+  std::normal_distribution<double> spread(0, 0.02);
+  std::vector<Vec3> crowd;
+  for (int i = 0; i < 3000; ++i) crowd.emplace_back(spread(random), spread(random), spread(random));
+  HairDensityField field(kCell);
+  field.build(crowd);
+  std::uniform_real_distribution<double> anywhere(-0.12, 0.12);
+  int inside = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const size_t k = 1 + static_cast<size_t>(i) % (crowd.size() - 2);
+    const std::vector<Vec3> own{crowd[k - 1], crowd[k], crowd[k + 1]};
+    const Vec3 point =
+        i % 2 ? crowd[k] : Vec3(anywhere(random), anywhere(random), anywhere(random));
+    const HairDensityField::SampleWithout sample = field.sample_without(point, own);
+    // The density bit for bit; the gradient to rounding.
+    ASSERT_EQ(sample.density, field.density_without(point, own)) << point.transpose();
+    const Vec3 gradient = field.gradient_per_cell_without(point, own);
+    ASSERT_LE((sample.gradient_per_cell - gradient).norm(), 1e-12 * (1 + gradient.norm()))
+        << point.transpose() << "\n"
+        << sample.gradient_per_cell.transpose() << "\n"
+        << gradient.transpose();
+    inside += field.density(point) > 0;
+  }
+  EXPECT_GT(inside, 1000);  // every particle, and some of the random points
+  // Outside the grid and at a non-finite point: nothing.
+  const std::vector<Vec3> none;
+  EXPECT_EQ(field.sample_without(Vec3(1, 0, 0), none).density, 0.0);
+  EXPECT_TRUE(field.sample_without(Vec3(std::nan(""), 0, 0), none).gradient_per_cell.isZero());
+}
+
 TEST(HairDensityField, EmptyAndNonFiniteInputs) {
   HairDensityField field(kCell);
   field.build({});
