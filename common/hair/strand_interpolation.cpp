@@ -115,6 +115,13 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     direction.push_back((last - first).normalized());
   }
   PointIndex index(anchors);
+  // Each guide's rest length along its particles, from its anchor to its tip.
+  std::vector<double> guide_length_m(static_cast<size_t>(guides.guide_count()), 0.0);
+  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g)
+    for (int64_t k = guides.offsets[static_cast<size_t>(g)] + 1;
+         k < guides.offsets[static_cast<size_t>(g) + 1]; ++k)
+      guide_length_m[static_cast<size_t>(g)] +=
+          (point_of(guides.rest_points, k) - point_of(guides.rest_points, k - 1)).norm();
 
   // Bound points: the wisps' bindings.
   for (size_t b = 0; b < guides.binding_point.size(); ++b) {
@@ -212,14 +219,24 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
           arc[static_cast<size_t>(i - anchor - 1)] +
           (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
     const double length = arc.back();
+    // The arc parameter along guides of rest length `guide_m`: a strand as long as they
+    // are or longer spans them (its tip follows theirs), a shorter one follows their first
+    // `length` metres (its tip follows the guide's point as far from the anchor). Spread
+    // over the whole guide, a strand a fifth its length would have each point follow a
+    // guide point five times as far out, and stretch as the guide bends.
+    auto parameter_along = [&](int64_t i, double guide_m) {
+      const double span = std::max(length, guide_m);
+      return span > 0 ? arc[static_cast<size_t>(i - anchor)] / span : 0.0;
+    };
     // Mean distance at rest from the strand's moving points to guide g at the same arc
     // parameter: the size of the offsets g would have to carry.
     auto mean_offset_m = [&](int32_t g) {
       double sum = 0;
-      for (int64_t i = held; i < bound_from; ++i) {
-        double u = length > 0 ? arc[static_cast<size_t>(i - anchor)] / length : 0.0;
-        sum += (point_of(strands.points, begin + i) - guide_rest_point(guides, g, u)).norm();
-      }
+      for (int64_t i = held; i < bound_from; ++i)
+        sum += (point_of(strands.points, begin + i) -
+                guide_rest_point(guides, g,
+                                 parameter_along(i, guide_length_m[static_cast<size_t>(g)])))
+                   .norm();
       return sum / static_cast<double>(std::max<int64_t>(1, bound_from - held));
     };
     std::vector<int32_t> nearest =
@@ -290,10 +307,15 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     float sum = binding.weights[si][0] + binding.weights[si][1] + binding.weights[si][2];
     for (float& weight : binding.weights[si]) weight /= sum;
 
-    // The rest offsets from the weighted guides at each point's arc parameter.
+    // The rest offsets from the weighted guides at each point's arc parameter, along the
+    // guides' weighted length (one parameter for the three guides of a barycentric strand).
+    double guides_m = 0;
+    for (size_t k = 0; k < 3; ++k)
+      if (chosen[k] >= 0)
+        guides_m += static_cast<double>(binding.weights[si][k]) *
+                    guide_length_m[static_cast<size_t>(chosen[k])];
     for (int64_t i = held; i < bound_from; ++i) {
-      double u = length > 0 ? arc[static_cast<size_t>(i - anchor)] / length : 0.0;
-      auto uf = static_cast<float>(u);
+      auto uf = static_cast<float>(parameter_along(i, guides_m));
       Vec3 blended = Vec3::Zero();
       for (size_t k = 0; k < 3; ++k)
         if (chosen[k] >= 0)

@@ -221,6 +221,53 @@ TEST(StrandInterpolation, AClumpFollowsTheGuideShapedLikeItNotTheNearestRoot) {
   EXPECT_EQ(binding.guides[kSideStrand][0], 10);
 }
 
+TEST(StrandInterpolation, AShortStrandFollowsTheFirstPartOfItsGuide) {
+  // A strand of 4 cm beside the side cluster's guide of 20 cm follows the guide's first
+  // 4 cm: bent below 10 cm, the guide leaves it where it was, and its length with it.
+  // Spread over the whole guide (its tip following the guide's tip), it would swing out
+  // and stretch.
+  Scene scene = make_scene();
+  std::vector<Vec3> short_strand;
+  for (int i = 0; i < 5; ++i) short_strand.push_back(Vec3(0.205, -0.01 * i, 0.003));
+  Points3f block(5, 3);
+  for (int i = 0; i < 5; ++i)
+    block.row(i) = short_strand[static_cast<size_t>(i)].cast<float>().transpose();
+  scene.strands.append_strand(block);
+  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
+  point_cluster.insert(point_cluster.end(), 5, kSide);
+  const int64_t strand = scene.strands.strand_count() - 1;
+  const int64_t first = scene.strands.offsets[static_cast<size_t>(strand)];
+
+  StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
+  ASSERT_EQ(binding.method[static_cast<size_t>(strand)], InterpolationMethod::clump);
+  ASSERT_EQ(binding.guides[static_cast<size_t>(strand)][0], 9);
+  // Its tip is 4 cm along a guide of 20: parameter 0.2, not 1.
+  EXPECT_NEAR(binding.parameter[static_cast<size_t>(first + 4)], 0.2, 1e-6);
+
+  // The guides bent a quarter turn about Z where they pass 10 cm below their anchors.
+  const Eigen::Matrix3d quarter = Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitZ()).matrix();
+  std::vector<float> guide_points =
+      moved_guides(scene, [&](const Vec3& p, const Vec3& anchor) -> Vec3 {
+        const Vec3 kink = anchor + Vec3(0, -0.1, 0);
+        return p.y() < kink.y() - 1e-9 ? Vec3(kink + quarter * (p - kink)) : p;
+      });
+  std::vector<float> points;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), scene.wisp_rest.data(), {}},
+                    points);
+  double length = 0;
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_LT((row_of(points, first + i) - short_strand[static_cast<size_t>(i)]).norm(), 1e-6)
+        << "point " << i;
+    if (i > 0) length += (row_of(points, first + i) - row_of(points, first + i - 1)).norm();
+  }
+  EXPECT_NEAR(length, 0.04, 1e-6);
+  // The guide's tip did move: 10 cm of it turned sideways.
+  const int64_t guide_tip = scene.guides.offsets[10] - 1;
+  EXPECT_GT(
+      (row_of(guide_points, guide_tip) - point_of(scene.guides.rest_points, guide_tip)).norm(),
+      0.1);
+}
+
 TEST(StrandInterpolation, AtRestReproducesTheGrownStrands) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
