@@ -34,6 +34,9 @@ void check_params(const InterpolationParams& p) {
   if (!(p.min_triangle_aspect >= 0 && p.min_triangle_aspect <= 1))
     throw Error::usage("min_triangle_aspect must be within [0, 1], not " +
                        std::to_string(p.min_triangle_aspect));
+  if (!(p.min_guide_length_ratio >= 0 && p.min_guide_length_ratio <= 1))
+    throw Error::usage("min_guide_length_ratio must be within [0, 1], not " +
+                       std::to_string(p.min_guide_length_ratio));
 }
 
 /// Smallest height of triangle (a, b, c) over its longest edge.
@@ -248,6 +251,13 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     for (size_t k = 0; k < 3 && barycentric; ++k)
       barycentric =
           guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] == cluster;
+    // Long enough to follow.
+    const double shortest_m = params.min_guide_length_ratio * length;
+    auto long_enough = [&](int32_t g) {
+      return guide_length_m[static_cast<size_t>(g)] >= shortest_m;
+    };
+    for (size_t k = 0; k < 3 && barycentric; ++k)
+      barycentric = long_enough(usable[static_cast<size_t>(nearest[k])]);
     if (barycentric) {
       for (size_t a = 0; a < 3; ++a)
         for (size_t b = a + 1; b < 3; ++b)
@@ -267,21 +277,38 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
       }
     }
     if (!barycentric) {
-      // Clump: of the candidates in the strand's cluster, the guide whose rest shape lies
-      // closest to the strand's (the least mean offset: the nearest root alone can be a
-      // short guide that a long strand would swing around); else the nearest guide of the
-      // cluster; else the nearest guide.
-      int32_t best = -1;
-      double best_offset = std::numeric_limits<double>::infinity();
-      for (int32_t candidate : nearest) {
-        int32_t g = usable[static_cast<size_t>(candidate)];
-        if (guides.cluster[static_cast<size_t>(g)] != cluster) continue;
-        double offset = mean_offset_m(g);
-        if (offset < best_offset) {
-          best_offset = offset;
-          best = candidate;
+      // Clump: of the candidates, the guide whose rest shape lies closest to the strand's
+      // (the least mean offset: the nearest root alone can be a short guide that a long
+      // strand would swing around): one of the strand's cluster long enough to follow;
+      // else one long enough of another cluster simulated alike; else the best of the
+      // cluster whatever its length; else the nearest guide of the cluster; else the
+      // nearest guide.
+      const int8_t simulated_as = style_of_point(begin + held);
+      auto best_of = [&](auto&& admits) {
+        int32_t found = -1;
+        double best_offset = std::numeric_limits<double>::infinity();
+        for (int32_t candidate : nearest) {
+          const int32_t g = usable[static_cast<size_t>(candidate)];
+          if (!admits(g)) continue;
+          const double offset = mean_offset_m(g);
+          if (offset < best_offset) {
+            best_offset = offset;
+            found = candidate;
+          }
         }
-      }
+        return found;
+      };
+      auto in_cluster = [&](int32_t g) {
+        return guides.cluster[static_cast<size_t>(g)] == cluster;
+      };
+      int32_t best = best_of([&](int32_t g) { return in_cluster(g) && long_enough(g); });
+      if (best < 0)
+        best = best_of([&](int32_t g) {
+          const auto guide_cluster = static_cast<size_t>(guides.cluster[static_cast<size_t>(g)]);
+          return long_enough(g) && guide_cluster < guides.cluster_simulated_style.size() &&
+                 guides.cluster_simulated_style[guide_cluster] == simulated_as;
+        });
+      if (best < 0) best = best_of(in_cluster);
       if (best < 0) {
         double best_distance = std::numeric_limits<double>::infinity();
         for (size_t i = 0; i < usable.size(); ++i) {

@@ -39,6 +39,13 @@ struct InterpolationParams {
   /// Barycentric only if the triangle of the three anchors is not a sliver: its smallest
   /// height is at least this share of its longest edge.
   double min_triangle_aspect = 0.05;
+  /// A guide a strand follows is at least this share of the strand's length (rest, from
+  /// the anchor): each of a barycentric strand's three, else it is a clump; a clump's
+  /// guide, from the candidates of its cluster, else of another cluster simulated alike,
+  /// else (none long enough among the candidates) the best of its cluster whatever its
+  /// length. A strand on a much shorter guide carries offsets tens of centimetres long
+  /// that turn with the guide's tip.
+  double min_guide_length_ratio = 0.5;
 };
 
 /// The simulated guides as interpolation reads them (guides.h5).

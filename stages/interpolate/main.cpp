@@ -59,6 +59,11 @@ int main(int argc, char** argv) {
                    "barycentric only if the guides' anchor triangle's smallest height is at "
                    "least this share of its longest edge",
                    hair::ParamRange::closed(0, 1));
+  app.params().add("min_guide_length_ratio", params.min_guide_length_ratio,
+                   "a guide a strand follows is at least this share of the strand's length "
+                   "(barycentric: all three, else clump; clump: from another cluster simulated "
+                   "alike if its own has none among the candidates)",
+                   hair::ParamRange::closed(0, 1));
 
   return app.run(argc, argv, [&] {
     hair::h5::File guides_file = hair::h5::File::open_read_only(guides_path);

@@ -268,6 +268,47 @@ TEST(StrandInterpolation, AShortStrandFollowsTheFirstPartOfItsGuide) {
       0.1);
 }
 
+TEST(StrandInterpolation, AStrandFollowsNoGuideFarShorterThanItWhereALongerOneIsNear) {
+  // A strand of 60 cm rooted among the grid's guides of 20 cm: barycentric by the
+  // paper's tests (same cluster, same direction), but its offsets would reach 40 cm below
+  // the guides and turn with their tips.
+  Scene scene = make_scene();
+  std::vector<Vec3> long_strand;
+  for (int i = 0; i < 31; ++i) long_strand.push_back(Vec3(0.021, -0.02 * i, 0.019));
+  Points3f block(31, 3);
+  for (int i = 0; i < 31; ++i)
+    block.row(i) = long_strand[static_cast<size_t>(i)].cast<float>().transpose();
+  scene.strands.append_strand(block);
+  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
+  point_cluster.insert(point_cluster.end(), 31, kGrid);
+  const auto strand = static_cast<size_t>(scene.strands.strand_count() - 1);
+
+  InterpolationParams paper;  // no test of length
+  paper.min_guide_length_ratio = 0;
+  EXPECT_EQ(bind_strands(scene.strands, scene.guides, paper).method[strand],
+            InterpolationMethod::barycentric);
+  // With the default, a clump: of its own cluster, whatever the length, where no guide
+  // among the candidates is long enough.
+  StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
+  EXPECT_EQ(binding.method[strand], InterpolationMethod::clump);
+  EXPECT_EQ(scene.guides.cluster[static_cast<size_t>(binding.guides[strand][0])], kGrid);
+  // A guide of 60 cm of the side cluster (simulated alike) near it: it follows that one.
+  InterpolationGuides& g = scene.guides;
+  const Eigen::Index first = g.rest_points.rows();
+  g.rest_points.conservativeResize(first + 16, 3);
+  for (int k = 0; k < 16; ++k)
+    g.rest_points.row(first + k) = Vec3(0.03, -0.04 * k, 0.03).cast<float>().transpose();
+  g.offsets.push_back(first + 16);
+  g.cluster.push_back(kSide);
+  g.is_wisp_centre.push_back(0);
+  g.strand.push_back(-1);
+  binding = bind_strands(scene.strands, g, {});
+  EXPECT_EQ(binding.method[strand], InterpolationMethod::clump);
+  EXPECT_EQ(binding.guides[strand][0], 10);
+  // The grid's own strands, as long as their guides, keep theirs.
+  EXPECT_EQ(binding.method[0], InterpolationMethod::barycentric);
+}
+
 TEST(StrandInterpolation, AtRestReproducesTheGrownStrands) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
@@ -404,6 +445,9 @@ TEST(StrandInterpolation, RefusesParametersOutOfRange) {
   EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
   params = {};
   params.min_direction_cosine = 2;
+  EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
+  params = {};
+  params.min_guide_length_ratio = 1.5;
   EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
 }
 
