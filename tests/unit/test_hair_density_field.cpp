@@ -15,6 +15,16 @@ using Vec3 = Eigen::Vector3d;
 
 constexpr double kCell = 0.01;
 
+/// `count` particles about the origin, normally spread by `sigma_m` on each axis.
+std::vector<Vec3> gaussian_crowd(unsigned seed, double sigma_m, int count) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> spread(0, sigma_m);
+  std::vector<Vec3> crowd;
+  for (int i = 0; i < count; ++i)
+    crowd.emplace_back(spread(random), spread(random), spread(random));
+  return crowd;
+}
+
 TEST(HairDensityField, OneSplatIsOneParticleWhereItIs) {
   HairDensityField field(kCell);
   Vec3 p(0.0123, -0.0456, 0.0789);
@@ -35,10 +45,7 @@ TEST(HairDensityField, OneSplatIsOneParticleWhereItIs) {
 TEST(HairDensityField, GradientPointsTowardTheCrowd) {
   // A crowd of particles around the origin; the density falls away from it, so the
   // gradient at a point beside the crowd points back at it.
-  std::mt19937 random(3);
-  std::normal_distribution<double> spread(0, 0.01);
-  std::vector<Vec3> crowd;
-  for (int i = 0; i < 2000; ++i) crowd.emplace_back(spread(random), spread(random), spread(random));
+  const std::vector<Vec3> crowd = gaussian_crowd(3, 0.01, 2000);
   HairDensityField field(kCell);
   field.build(crowd);
   for (const Vec3& beside : {Vec3(0.02, 0, 0), Vec3(0, -0.015, 0.01), Vec3(-0.01, 0.01, -0.01)}) {
@@ -73,10 +80,8 @@ TEST(HairDensityField, OwnSplatsAreTakenOutExactly) {
 TEST(HairDensityField, OnePassSampleAgreesWithTheTwoCalls) {
   // A crowd, sampled at random points inside it, near and beyond the grid's edge, with a
   // particle's own splats (itself and its neighbours) taken out.
+  const std::vector<Vec3> crowd = gaussian_crowd(7, 0.02, 3000);
   std::mt19937 random(7);
-  std::normal_distribution<double> spread(0, 0.02);
-  std::vector<Vec3> crowd;
-  for (int i = 0; i < 3000; ++i) crowd.emplace_back(spread(random), spread(random), spread(random));
   HairDensityField field(kCell);
   field.build(crowd);
   std::uniform_real_distribution<double> anywhere(-0.12, 0.12);

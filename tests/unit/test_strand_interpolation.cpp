@@ -148,6 +148,23 @@ Vec3 row_of(const std::vector<float>& points, int64_t row) {
   return Vec3(points[3 * row], points[3 * row + 1], points[3 * row + 2]);
 }
 
+/// Appends a straight strand of `count` points `step_m` apart down -Y from `root`, all of
+/// `cluster`; returns its points and its index.
+std::pair<std::vector<Vec3>, int64_t> add_straight_strand(Scene& scene, const Vec3& root,
+                                                          double step_m, int count,
+                                                          int32_t cluster) {
+  std::vector<Vec3> points;
+  Points3f block(count, 3);
+  for (int i = 0; i < count; ++i) {
+    points.push_back(root - Vec3(0, step_m * i, 0));
+    block.row(i) = points.back().cast<float>().transpose();
+  }
+  scene.strands.append_strand(block);
+  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
+  point_cluster.insert(point_cluster.end(), static_cast<size_t>(count), cluster);
+  return {points, scene.strands.strand_count() - 1};
+}
+
 TEST(StrandInterpolation, ChoosesBarycentricClumpHeldAndBraided) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
@@ -227,15 +244,8 @@ TEST(StrandInterpolation, AShortStrandFollowsTheFirstPartOfItsGuide) {
   // Spread over the whole guide (its tip following the guide's tip), it would swing out
   // and stretch.
   Scene scene = make_scene();
-  std::vector<Vec3> short_strand;
-  for (int i = 0; i < 5; ++i) short_strand.push_back(Vec3(0.205, -0.01 * i, 0.003));
-  Points3f block(5, 3);
-  for (int i = 0; i < 5; ++i)
-    block.row(i) = short_strand[static_cast<size_t>(i)].cast<float>().transpose();
-  scene.strands.append_strand(block);
-  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
-  point_cluster.insert(point_cluster.end(), 5, kSide);
-  const int64_t strand = scene.strands.strand_count() - 1;
+  const auto [short_strand, strand] =
+      add_straight_strand(scene, Vec3(0.205, 0, 0.003), 0.01, 5, kSide);
   const int64_t first = scene.strands.offsets[static_cast<size_t>(strand)];
 
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
@@ -273,15 +283,8 @@ TEST(StrandInterpolation, AStrandFollowsNoGuideFarShorterThanItWhereALongerOneIs
   // paper's tests (same cluster, same direction), but its offsets would reach 40 cm below
   // the guides and turn with their tips.
   Scene scene = make_scene();
-  std::vector<Vec3> long_strand;
-  for (int i = 0; i < 31; ++i) long_strand.push_back(Vec3(0.021, -0.02 * i, 0.019));
-  Points3f block(31, 3);
-  for (int i = 0; i < 31; ++i)
-    block.row(i) = long_strand[static_cast<size_t>(i)].cast<float>().transpose();
-  scene.strands.append_strand(block);
-  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
-  point_cluster.insert(point_cluster.end(), 31, kGrid);
-  const auto strand = static_cast<size_t>(scene.strands.strand_count() - 1);
+  const auto strand = static_cast<size_t>(
+      add_straight_strand(scene, Vec3(0.021, 0, 0.019), 0.02, 31, kGrid).second);
 
   InterpolationParams paper;  // no test of length
   paper.min_guide_length_ratio = 0;
