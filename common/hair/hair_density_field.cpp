@@ -249,7 +249,7 @@ HairDensityField::SampleWithout HairDensityField::sample_without(
                        splat.fraction[axis]) -
           axis_overlap(lower[axis], lower_fraction[axis], splat.cell[axis], splat.fraction[axis]);
     }
-    sample.density -= 1 * centre.x() * centre.y() * centre.z();
+    sample.density -= centre.x() * centre.y() * centre.z();  // as self_density()
     sample.gradient_per_cell -=
         Vec3(rise.x() * centre.y() * centre.z(), centre.x() * rise.y() * centre.z(),
              centre.x() * centre.y() * rise.z());

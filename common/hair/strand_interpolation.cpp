@@ -284,16 +284,17 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
       // cluster whatever its length; else the nearest guide of the cluster; else the
       // nearest guide.
       const int8_t simulated_as = style_of_point(begin + held);
+      std::vector<double> candidate_offset_m(nearest.size(), -1);  // each worked out once
       auto best_of = [&](auto&& admits) {
         int32_t found = -1;
         double best_offset = std::numeric_limits<double>::infinity();
-        for (int32_t candidate : nearest) {
-          const int32_t g = usable[static_cast<size_t>(candidate)];
+        for (size_t c = 0; c < nearest.size(); ++c) {
+          const int32_t g = usable[static_cast<size_t>(nearest[c])];
           if (!admits(g)) continue;
-          const double offset = mean_offset_m(g);
-          if (offset < best_offset) {
-            best_offset = offset;
-            found = candidate;
+          if (candidate_offset_m[c] < 0) candidate_offset_m[c] = mean_offset_m(g);
+          if (candidate_offset_m[c] < best_offset) {
+            best_offset = candidate_offset_m[c];
+            found = nearest[c];
           }
         }
         return found;
