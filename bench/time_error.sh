@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Run time against error (issue 9): for each model two references, in which every grown
-# strand is a guide simulated at a small time step (REF_SUBSTEPS per frame): the full
+# strand is a guide simulated at a small time step (REF_SUBSTEPS per frame) with the
+# repulsion worked out every frame: the full
 # reference, everything as normal hair (the style rules off), and the by-style reference
 # (the style rules on). Against them, variants of the defaults: guide counts, substeps, the
-# fast setting, the style rules off, and clump-only interpolation. Each is simulated and
+# fast setting, the style rules off, the repulsion every frame, and clump-only
+# interpolation. Each is simulated and
 # interpolated to every strand of every frame; its error is the distance of each strand
 # point to the same point of a reference, divided by its strand's length, over all frames
 # (mean and 95th percentile). The full reference measures all that the defaults leave out;
@@ -59,6 +61,7 @@ variants=(
   "substeps 4|--substeps 4|"
   "fast: 1 step + 0.2 H|--substeps 1 --segment_length_h 0.2|"
   "style rules off|--by_style=false|"
+  "repulsion every frame|--repulsion_interval_frames 1|"
   "clump only||--min_triangle_aspect 1"
 )
 
@@ -105,8 +108,8 @@ for input in "${inputs[@]}"; do
   declare -A guides_of=() sim_ms=() interp_ms=()
   runs_kept=$runs
   runs=1  # the reference is slow and only its frames are needed
-  run_variant "$dir" "full reference" "--by_style=false --guide_count 1000000 --substeps $ref_substeps" ""
-  run_variant "$dir" "by-style reference" "--guide_count 1000000 --substeps $ref_substeps" ""
+  run_variant "$dir" "full reference" "--by_style=false --guide_count 1000000 --substeps $ref_substeps --repulsion_interval_frames 1" ""
+  run_variant "$dir" "by-style reference" "--guide_count 1000000 --substeps $ref_substeps --repulsion_interval_frames 1" ""
   runs=$runs_kept
   for variant in "${variants[@]}"; do
     IFS='|' read -r label sim_options interp_options <<<"$variant"
@@ -129,7 +132,7 @@ cp "$csv" "$out/time_error.csv"
 {
   echo "# Run time against error"
   echo
-  echo "\`bench/time_error.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(cpu_name); $threads threads; medians of $runs runs; motion $motion for $duration_s s at 30 fps; $strand_count grown strands per model; references: every strand a guide, $ref_substeps substeps per frame, the style rules off (full) or on (by style)."
+  echo "\`bench/time_error.sh\` on $(date -u +%Y-%m-%d): $(nproc) cores, $(cpu_name); $threads threads; medians of $runs runs; motion $motion for $duration_s s at 30 fps; $strand_count grown strands per model; references: every strand a guide, $ref_substeps substeps per frame, the repulsion every frame, the style rules off (full) or on (by style)."
   echo
   cat "$out/time_error.md.body"
 } >"$out/time_error.md"

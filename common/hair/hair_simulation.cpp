@@ -78,6 +78,7 @@ void check_params(const SimulationParams& p) {
   require(p.mass_per_length_kg_m > 0, "mass_per_length_kg_m must be positive");
   require(p.body_voxel_h > 0 && p.body_clearance_h >= 0, "body field spacing must be positive");
   require(p.density_cell_h > 0, "density_cell_h must be positive");
+  require(p.repulsion_interval_frames >= 1, "repulsion_interval_frames must be at least 1");
 }
 
 /// One simulated strand during the run.
@@ -549,8 +550,11 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
     for (int step = 0; step < params.substeps; ++step) {
       double t1 = (frame - 1) / params.fps + (step + 1) * dt_s;
       RigidTransform next = step + 1 == params.substeps ? pose : motion.at(t1);
-      // Hair-hair repulsion from the density at the start of the frame.
-      if (params.repulsion_m_s2 > 0 && step == 0) {
+      // Hair-hair repulsion from the density at the start of the frame, every
+      // repulsion_interval_frames frames (from frame 1), held in between.
+      const bool repel = params.repulsion_m_s2 > 0 && step == 0 &&
+                         (frame - 1) % params.repulsion_interval_frames == 0;
+      if (repel) {
         gather_hair();
         density.build(hair_positions);
       }
@@ -572,7 +576,7 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
             strand.anchors[a].position_m = from;
             strand.anchors[a].velocity_m_s = (next.apply(strand.anchor_rest_m[a]) - from) / dt_s;
           }
-          if (params.repulsion_m_s2 > 0 && step == 0) {
+          if (repel) {
             for (int32_t i = 0; i < model.hair_count(); ++i)
               strand.acceleration_m_s2[static_cast<size_t>(
                   model.hair_particle[static_cast<size_t>(i)])] = repulsion(strand, i, previous);

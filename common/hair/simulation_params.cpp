@@ -66,6 +66,10 @@ void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
              ParamRange::closed(0, 1000));
   params.add("density_cell_h", p.density_cell_h, "cell of the hair density grid, in H",
              ParamRange::closed(0.005, 1));
+  params.add("repulsion_interval_frames", p.repulsion_interval_frames,
+             "the repulsion is worked out every this many frames and held in between (1: "
+             "every frame)",
+             ParamRange::closed(1, 100));
   params.add("settle_speed_h_s", p.settle_speed_h_s,
              "a still head: integration stops when no particle is faster than this (H/s) ...",
              ParamRange::closed(0, 100));

@@ -276,6 +276,12 @@ TEST(HairSimulation, ElasticEnergyReadOffTheNextStepEqualsItWorkedOutAtTheEnd) {
   EXPECT_GT(longer.statistics.back().elastic_energy_j, 0);
 }
 
+TEST(HairSimulation, RefusesARepulsionIntervalUnderOneFrame) {
+  SimulationParams params = test_params();
+  params.repulsion_interval_frames = 0;
+  EXPECT_THROW(simulate_hair(make_scene(), HeadMotion::preset("nod", kPivot), params), Error);
+}
+
 TEST(HairSimulation, StillHeadSettlesAndStopsEarly) {
   SimulationScene scene = make_scene();
   SimulationParams params = test_params();
