@@ -208,6 +208,40 @@ ClusterRuns sampled_runs(const ClusterRuns& cluster, int max_count) {
   return sample;
 }
 
+/// Mean skin distance of the runs' points at 0, 25, 50, 75 and 100% of their length, in H.
+std::array<double, 5> skin_distance_profile_h(const StrandSet& runs,
+                                              const TriangleMeshDistance& skin, double h) {
+  constexpr int kPoints = 5;
+  StrandSet quarters = resample_by_count(runs, kPoints);
+  std::vector<double> distance_m(static_cast<size_t>(quarters.point_count()));
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int64_t row = 0; row < quarters.point_count(); ++row)
+    distance_m[static_cast<size_t>(row)] = skin.distance(point_of(quarters.points, row));
+  std::array<double, kPoints> mean_h{};
+  for (int64_t s = 0; s < quarters.strand_count(); ++s)
+    for (int j = 0; j < kPoints; ++j)
+      mean_h[static_cast<size_t>(j)] += distance_m[static_cast<size_t>(quarters.offsets[s] + j)];
+  for (double& value : mean_h)
+    value /= static_cast<double>(std::max<int64_t>(1, quarters.strand_count())) * h;
+  return mean_h;
+}
+
+/// -y of the unit mean edge vector of `profiles` (every strand `points_per` points) at
+/// the first edge, a third, two thirds and the last; 0 where the mean is zero.
+std::array<double, 4> downward_profile(const StrandSet& profiles, int points_per) {
+  std::array<double, 4> downward{};
+  for (int k = 0; k < 4; ++k) {
+    auto edge = static_cast<int64_t>(std::lround(k * (points_per - 2) / 3.0));
+    Vec3 mean = Vec3::Zero();
+    for (int64_t s = 0; s < profiles.strand_count(); ++s)
+      mean += point_of(profiles.points, profiles.offsets[s] + edge + 1) -
+              point_of(profiles.points, profiles.offsets[s] + edge);
+    double norm = mean.norm();
+    downward[static_cast<size_t>(k)] = norm > 0 ? -mean.y() / norm : 0.0;
+  }
+  return downward;
+}
+
 }  // namespace
 
 const std::vector<std::string>& paper_feature_names() {
@@ -228,15 +262,22 @@ Eigen::RowVectorXd paper_feature_row(const PaperFeatures& features) {
 const std::vector<std::string>& extended_feature_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> all = paper_feature_names();
-    all.insert(all.end(), {"tip_share", "end_spread_h"});
+    all.insert(all.end(), {"tip_share", "end_spread_h", "skin_distance_0_h", "skin_distance_25_h",
+                           "skin_distance_50_h", "skin_distance_75_h", "skin_distance_100_h",
+                           "downward_0", "downward_33", "downward_67", "downward_100"});
     return all;
   }();
   return names;
 }
 
 Eigen::RowVectorXd extended_feature_row(const PaperFeatures& features) {
-  Eigen::RowVectorXd row(9);
-  row << paper_feature_row(features), features.tip_share, features.end_spread_h;
+  Eigen::RowVectorXd row(static_cast<Eigen::Index>(extended_feature_names().size()));
+  row << paper_feature_row(features), features.tip_share, features.end_spread_h,
+      Eigen::Map<const Eigen::RowVectorXd>(
+          features.skin_distance_h.data(),
+          static_cast<Eigen::Index>(features.skin_distance_h.size())),
+      Eigen::Map<const Eigen::RowVectorXd>(features.downward.data(),
+                                           static_cast<Eigen::Index>(features.downward.size()));
   return row;
 }
 
@@ -364,7 +405,8 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
   const auto cluster_count = static_cast<size_t>(input.cluster_count);
   result.paper.resize(cluster_count);
   result.paper_rows = Eigen::MatrixXd::Zero(input.cluster_count, 7);
-  result.extended_rows = Eigen::MatrixXd::Zero(input.cluster_count, 9);
+  result.extended_rows = Eigen::MatrixXd::Zero(
+      input.cluster_count, static_cast<Eigen::Index>(extended_feature_names().size()));
   result.raw_rows =
       Eigen::MatrixXd::Zero(input.cluster_count, raw_feature_count(params.raw_points));
   result.strand_count.assign(cluster_count, 0);
@@ -419,6 +461,8 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
       scalp_distance_m[static_cast<size_t>(row)] = scalp.distance(point_of(profiles.points, row));
     paper.max_scalp_distance_h =
         *std::max_element(scalp_distance_m.begin(), scalp_distance_m.end()) / h;
+    paper.skin_distance_h = skin_distance_profile_h(sample.runs, skin, h);
+    paper.downward = downward_profile(profiles, params.profile_points);
     result.paper_rows.row(static_cast<Eigen::Index>(c)) = paper_feature_row(paper);
     result.extended_rows.row(static_cast<Eigen::Index>(c)) = extended_feature_row(paper);
 

@@ -4,6 +4,7 @@
 // them with.
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -73,13 +74,23 @@ struct PaperFeatures {
   double tip_share = 0;
   /// d_M of equation (6) in H: how far apart the strands end (a band gathers them).
   double end_spread_h = 0;
+  /// Mean distance to the body's surface (the skin) of the strands' points at 0, 25,
+  /// 50, 75 and 100% of their length, in H: where along its length hair leaves the
+  /// head (a cap and short hair lie on it to the end, a tail leaves it at the band,
+  /// hanging hair comes back to the shoulders).
+  std::array<double, 5> skin_distance_h{};
+  /// How much the strands point down at the start, a third, two thirds and the end of
+  /// their length: -y of the unit mean of their edge vectors there (+Y up), 1 hanging
+  /// straight down, 0 level, -1 rising.
+  std::array<double, 4> downward{};
 };
 
 /// Names of the paper features, in the order of paper_feature_row().
 const std::vector<std::string>& paper_feature_names();
 /// The paper features as a row (the order of paper_feature_names()).
 Eigen::RowVectorXd paper_feature_row(const PaperFeatures& features);
-/// Names of the extended features: the paper's, then tip_share and end_spread_h.
+/// Names of the extended features: the paper's, then tip_share, end_spread_h,
+/// skin_distance_{0,25,50,75,100}_h and downward_{0,33,67,100}.
 const std::vector<std::string>& extended_feature_names();
 /// The extended features as a row (the order of extended_feature_names()).
 Eigen::RowVectorXd extended_feature_row(const PaperFeatures& features);

@@ -78,7 +78,7 @@ std::multiset<std::string> styles_found(const fs::path& path) {
   std::vector<std::string> report = text_lines(inspect.out);
   EXPECT_FALSE(report.empty());
   if (!report.empty()) {
-    EXPECT_EQ(report.back(), "valid: hairstyle.styles v1");
+    EXPECT_EQ(report.back(), "valid: hairstyle.styles v2");
   }
   hair::h5::File file = hair::h5::File::open_read_only(path);
   EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "classify");

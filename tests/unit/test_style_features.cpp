@@ -100,6 +100,46 @@ TEST(StyleFeatures, LengthsAndScalpDistanceOfStraightStrands) {
   EXPECT_EQ(features.point_count[0], 44);
 }
 
+TEST(StyleFeatures, SkinDistanceAndDownwardProfilesAlongTheStrands) {
+  StyleFeatureInput input = flat_scalp_input();
+  input.cluster_count = 2;
+  for (int i = 0; i < 3; ++i) {
+    float x = 0.1f * static_cast<float>(i);
+    // Cluster 0: 0.2 m straight up off the flat body (skin at y = 0): 0, 0.05, ..., 0.2 m
+    // from the skin at 0, 25, ..., 100% of the length, with H = 0.25: 0, 0.2, ... 0.8 H;
+    // pointing up all along.
+    add_strand(input, vertical(x, 0, 0.2f), std::vector<int32_t>(11, 0),
+               std::vector<int32_t>(11, -1));
+    // Cluster 1: level at 0.1 m above the skin for 0.3 m, then 0.3 m straight down to it.
+    add_strand(input, rows({{x, 0.1f, 0}, {x, 0.1f, 0.3f}, {x, -0.2f, 0.3f}}), {1, 1, 1},
+               {-1, -1, -1});
+  }
+  StyleFeatures features = style_features(input, {});
+  const PaperFeatures& up = features.paper[0];
+  const PaperFeatures& bent = features.paper[1];
+  for (int j = 0; j < 5; ++j)
+    EXPECT_NEAR(up.skin_distance_h[static_cast<size_t>(j)], 0.2 * j, 1e-6) << j;
+  for (double downward : up.downward) EXPECT_NEAR(downward, -1.0, 1e-6);
+  // Cluster 1 at 0, 25, 50, 75, 100% (0, 0.15, 0.3, 0.45, 0.6 m along): 0.1 m above the
+  // skin for the first three, then 0.05 m below it and 0.2 m below (distances are
+  // unsigned): 0.4, 0.4, 0.4, 0.2, 0.8 H.
+  const double expected_h[] = {0.4, 0.4, 0.4, 0.2, 0.8};
+  for (int j = 0; j < 5; ++j)
+    EXPECT_NEAR(bent.skin_distance_h[static_cast<size_t>(j)], expected_h[j], 1e-6) << j;
+  // 20 points: edges 0, 6 (level, the first half), 12 and 18 (down, the second).
+  EXPECT_NEAR(bent.downward[0], 0.0, 1e-6);
+  EXPECT_NEAR(bent.downward[1], 0.0, 1e-6);
+  EXPECT_NEAR(bent.downward[2], 1.0, 1e-6);
+  EXPECT_NEAR(bent.downward[3], 1.0, 1e-6);
+  // The extended row: the paper's seven, tip_share, end_spread_h, then these.
+  ASSERT_EQ(features.extended_rows.cols(), 18);
+  ASSERT_EQ(extended_feature_names().size(), 18u);
+  EXPECT_EQ(extended_feature_names()[9], "skin_distance_0_h");
+  EXPECT_EQ(extended_feature_names()[17], "downward_100");
+  EXPECT_DOUBLE_EQ(features.extended_rows(1, 12), bent.skin_distance_h[3]);
+  EXPECT_DOUBLE_EQ(features.extended_rows(1, 16), bent.downward[3]);
+}
+
 TEST(StyleFeatures, GatheringRatioIsZeroForStrandsMeetingAtTheEndAndOneForParallelStrands) {
   StyleFeatureInput input = flat_scalp_input();
   input.cluster_count = 2;
@@ -117,7 +157,7 @@ TEST(StyleFeatures, GatheringRatioIsZeroForStrandsMeetingAtTheEndAndOneForParall
   // parallel strands, 0.12 m on average, with H = 0.25: 0.48 H.
   EXPECT_NEAR(features.paper[0].end_spread_h, 0.0, 1e-6);
   EXPECT_NEAR(features.paper[1].end_spread_h, 0.48, 1e-6);
-  EXPECT_EQ(features.extended_rows.row(1).tail(2),
+  EXPECT_EQ(features.extended_rows.row(1).segment(7, 2),
             Eigen::RowVector2d(1.0, features.paper[1].end_spread_h));
   EXPECT_EQ(features.extended_rows.row(1).head(7), features.paper_rows.row(1));
 }

@@ -260,7 +260,7 @@ int main(int argc, char** argv) {
                            ".\n";
       const std::map<std::string, std::string> titles = {
           {"paper", "The paper's features"},
-          {"extended", "Extended features (the paper's, tip_share and end_spread_h)"},
+          {"extended", "Extended features (the paper's and eleven of ours)"},
           {"raw", "Raw features"}};
       for (const std::string& set : kFeatureSets) {
         const hair::StyleTable& table = tables.at(set);
