@@ -19,6 +19,8 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 constexpr double kPi = std::numbers::pi;
 constexpr double kStep_m = 0.004;  // spacing of centre-curve points
+// The tightest a braid's axis bends: about the braid's width (twice braid_width_m).
+constexpr double kBraidMinBendRadius_m = 0.03;
 
 /// Random numbers from std::mt19937, whose output the standard fixes, with the
 /// distributions written out here (the standard library's are implementation-defined),
@@ -243,6 +245,28 @@ std::vector<Vec3> grown_curve(const Head& head, const Vec3& root, const Vec3& st
       points[i] =
           head.pushed_out(0.5 * points[i] + 0.25 * (points[i - 1] + points[i + 1]), clearance_m);
   return points;
+}
+
+/// Rounds the creases out of `curve`: where it turns between consecutive segments by more
+/// than a bend of radius `min_radius_m` allows, the point is moved towards its
+/// neighbours' midpoint (and kept `clearance_m` off the body), pass after pass until no
+/// point turns too sharply (at most `max_passes`). Ends stay; a curve that bends less
+/// everywhere is returned unchanged. A braid's axis grown down onto a shoulder is pushed
+/// off it within a step or two, a fold no braid a few centimetres wide makes.
+void round_creases(const Head& head, std::vector<Vec3>& curve, double min_radius_m,
+                   double clearance_m, int max_passes = 400) {
+  for (int pass = 0; pass < max_passes; ++pass) {
+    std::vector<size_t> creased;
+    for (size_t i = 1; i + 1 < curve.size(); ++i) {
+      Vec3 before = curve[i] - curve[i - 1], after = curve[i + 1] - curve[i];
+      double turn = std::acos(std::clamp(before.normalized().dot(after.normalized()), -1.0, 1.0));
+      if (turn > 0.5 * (before.norm() + after.norm()) / min_radius_m) creased.push_back(i);
+    }
+    if (creased.empty()) return;
+    for (size_t i : creased)
+      curve[i] =
+          head.pushed_out(0.5 * curve[i] + 0.25 * (curve[i - 1] + curve[i + 1]), clearance_m);
+  }
 }
 
 /// Adds waves across the strip (amplitude fading in over the first 3 cm).
@@ -547,6 +571,8 @@ void add_braid(const ComponentSpec& component, int component_index, const Defect
   std::vector<Vec3> axis =
       grown_curve(head, top, (top_out + 0.8 * Vec3(0, -1, 0)).normalized(), length, 0.05,
                   defects.body_clearance_m + component.braid_depth_m);
+  round_creases(head, axis, kBraidMinBendRadius_m,
+                defects.body_clearance_m + component.braid_depth_m);
   std::vector<double> axis_along(axis.size(), 0.0);
   for (size_t i = 1; i < axis.size(); ++i)
     axis_along[i] = axis_along[i - 1] + (axis[i] - axis[i - 1]).norm();
