@@ -295,6 +295,9 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
                                         rest[static_cast<size_t>(t.particle[1])],
                                         rest[static_cast<size_t>(t.particle[2])]));
     }
+    if (centroid.empty())  // gather_wisp() gives three centre points at least
+      throw Error::runtime(scene.source, "the wisp of braided cluster " +
+                                             std::to_string(wisp.cluster) + " has no tetrahedron");
     result.wisp_tetrahedron_offset.push_back(result.wisp_tetrahedron_offset.back() +
                                              static_cast<int32_t>(centroid.size()));
     for (size_t m = 0; m < wisp.member_strand.size(); ++m) {

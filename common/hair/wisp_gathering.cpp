@@ -68,7 +68,9 @@ std::vector<Vec3> gather_bundle(const StrandSet& strands, WispPlan& wisp, double
       best_first = first;
     }
   }
-  if (best_count < 2) return {};
+  // Three points at least: simulate hangs the wisp from a chain of tetrahedra (the
+  // centre, with a ghost after its first point), and two points make none.
+  if (best_count < 3) return {};
   std::vector<Vec3> centre;
   for (int k = best_first + best_count - 1; k >= best_first; --k) {
     Vec3 p = mean[static_cast<size_t>(k)];

@@ -29,7 +29,8 @@ namespace hair {
 /// and anchors are updated.
 ///
 /// Empty, with `wisp` and `loose` untouched, when fewer than two tips end together, when
-/// no stretch of two samples gathers, or when a centre point stays inside the body.
+/// no stretch of three samples gathers (two make no tetrahedron of the wisp's chain), or
+/// when a centre point stays inside the body.
 std::vector<Eigen::Vector3d> gather_wisp(const StrandSet& strands, WispPlan& wisp, double step_m,
                                          double gather_radius_m, const BodySdf& body,
                                          double clearance_m, std::vector<GuideStrand>& loose);

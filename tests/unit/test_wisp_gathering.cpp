@@ -113,6 +113,25 @@ TEST(WispGathering, AStrandThatEndsPartWayDownTheBraidJoinsTheWisp) {
   EXPECT_GT(joining[static_cast<size_t>(first - 1)].x(), 0.2 + 0.03 - 0.011);
 }
 
+TEST(WispGathering, StrandsThatGatherOnlyOverTheLastStepAreNoWisp) {
+  // Three straight strands from roots 0.1 m apart to one tip 0.2 m below: 0.0089 m apart
+  // on average one step (0.02 m) from the tip, 0.018 m two steps up, over the radius
+  // (0.015 m). Two samples gather: a centre strand of two points, on which simulate can
+  // build no tetrahedron to bind the members to (two_braids of hair-synth, seed 1,
+  // crashed simulate so).
+  std::vector<std::vector<Vec3>> polylines;
+  for (int s = 0; s < 3; ++s) {
+    double angle = 2 * std::numbers::pi * s / 3;
+    Vec3 root(0.3 + 0.1 * std::cos(angle), 0, 0.1 * std::sin(angle)), tip(0.3, -0.2, 0);
+    std::vector<Vec3> strand;
+    for (int i = 0; i <= 40; ++i) strand.push_back(root + (tip - root) * (i / 40.0));
+    polylines.push_back(strand);
+  }
+  auto [wisp, centre, loose] = gather_the_wisp(polylines);
+  EXPECT_TRUE(centre.empty());
+  EXPECT_TRUE(loose.empty());
+}
+
 TEST(WispGathering, ACapThatEndsAllRoundTheHeadIsNoWisp) {
   // Strands over the sphere from its crown down to its equator, all round it.
   std::vector<std::vector<Vec3>> polylines;
