@@ -4,7 +4,7 @@
 # gets a wisp): the largest stable time step per model, the stiffness from x1 to x1000,
 # head motions from the shake to past the violent shake, and a 10,000-frame run tracking
 # the energy. Markdown tables on stdout. The fast cases are the unit tests
-# (tests/unit/test_simulation_stress.cpp).
+# (tests/unit/sim/test_simulation_stress.cpp).
 #
 #   bench/stability.sh [MAKEHUMAN_DIR]
 #

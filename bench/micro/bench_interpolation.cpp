@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "hair/frames_io.h"
 #include "hair/h5/file.h"
-#include "hair/hair_style.h"
-#include "hair/strand_interpolation.h"
+#include "hair/interp/frames_io.h"
+#include "hair/interp/strand_interpolation.h"
+#include "hair/style/hair_style.h"
 
 namespace {
 

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "hair/altitude_strand.h"
-#include "hair/banded_cholesky.h"
-#include "hair/strand_dynamics.h"
+#include "hair/sim/altitude_strand.h"
+#include "hair/sim/banded_cholesky.h"
+#include "hair/sim/strand_dynamics.h"
 
 extern "C" void dpbsv_(const char* uplo, const int* n, const int* kd, const int* nrhs, double* ab,
                        const int* ldab, double* b, const int* ldb, int* info);

@@ -2,14 +2,14 @@
 // from extract.h5, clusters.h5, strands.h5 and a trained style model -> styles.h5.
 #include <spdlog/spdlog.h>
 
-#include "hair/atomic_file.h"
-#include "hair/cluster_styles.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/stage_app.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/hair_style.h"
-#include "hair/provenance.h"
-#include "hair/stage_app.h"
-#include "hair/style_io.h"
-#include "hair/style_model_io.h"
+#include "hair/style/cluster_styles.h"
+#include "hair/style/hair_style.h"
+#include "hair/style/style_io.h"
+#include "hair/style/style_model_io.h"
 
 int main(int argc, char** argv) {
   hair::StageApp app("classify",

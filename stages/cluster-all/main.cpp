@@ -2,12 +2,12 @@
 // Algorithm 2), with the middle clusters of middle.h5 as single nodes -> clusters.h5.
 #include <spdlog/spdlog.h>
 
-#include "hair/atomic_file.h"
-#include "hair/clustering_io.h"
-#include "hair/clustering_params.h"
+#include "hair/cluster/clustering_io.h"
+#include "hair/cluster/clustering_params.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/stage_app.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/provenance.h"
-#include "hair/stage_app.h"
 
 int main(int argc, char** argv) {
   hair::StageApp app("cluster-all",

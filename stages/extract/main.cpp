@@ -2,14 +2,14 @@
 // (one per patch), the body with its head height H and scalp -> extract.h5.
 #include <spdlog/spdlog.h>
 
-#include "hair/atomic_file.h"
-#include "hair/extract.h"
-#include "hair/extract_io.h"
-#include "hair/extract_params.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/stage_app.h"
+#include "hair/extract/extract.h"
+#include "hair/extract/extract_io.h"
+#include "hair/extract/extract_params.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/mesh_io.h"
-#include "hair/provenance.h"
-#include "hair/stage_app.h"
+#include "hair/mesh/mesh_io.h"
 
 int main(int argc, char** argv) {
   hair::StageApp app("extract",

@@ -2,11 +2,11 @@
 // section 4.4, Figure 7), from extract.h5, types.h5 and clusters.h5 -> strands.h5.
 #include <spdlog/spdlog.h>
 
-#include "hair/atomic_file.h"
-#include "hair/grow_io.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/stage_app.h"
+#include "hair/grow/grow_io.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/provenance.h"
-#include "hair/stage_app.h"
 
 int main(int argc, char** argv) {
   hair::StageApp app("grow",

@@ -6,16 +6,16 @@
 #include <chrono>
 #include <cmath>
 
-#include "hair/atomic_file.h"
-#include "hair/error.h"
-#include "hair/frame_range.h"
-#include "hair/frames_io.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/error.h"
+#include "hair/core/frame_range.h"
+#include "hair/core/progress.h"
+#include "hair/core/stage_app.h"
 #include "hair/h5/frame_dataset.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/progress.h"
-#include "hair/provenance.h"
-#include "hair/stage_app.h"
-#include "hair/strand_interpolation.h"
+#include "hair/interp/frames_io.h"
+#include "hair/interp/strand_interpolation.h"
 
 namespace {
 

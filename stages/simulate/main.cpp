@@ -2,14 +2,14 @@
 // by style (paper section 5.2), from extract.h5, strands.h5 and styles.h5 -> guides.h5.
 #include <spdlog/spdlog.h>
 
-#include "hair/atomic_file.h"
-#include "hair/guides_io.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/stage_app.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/hair_simulation.h"
-#include "hair/head_motion.h"
-#include "hair/provenance.h"
-#include "hair/simulation_params.h"
-#include "hair/stage_app.h"
+#include "hair/sim/guides_io.h"
+#include "hair/sim/hair_simulation.h"
+#include "hair/sim/head_motion.h"
+#include "hair/sim/simulation_params.h"
 
 int main(int argc, char** argv) {
   hair::StageApp app("simulate",

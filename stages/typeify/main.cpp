@@ -2,14 +2,14 @@
 // Algorithm 1): root_free, root_connected, middle or tip -> types.h5.
 #include <spdlog/spdlog.h>
 
-#include "hair/atomic_file.h"
-#include "hair/extract_io.h"
-#include "hair/group_scalp_distance.h"
+#include "hair/cluster/group_scalp_distance.h"
+#include "hair/cluster/typeify.h"
+#include "hair/cluster/typeify_io.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/stage_app.h"
+#include "hair/extract/extract_io.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/provenance.h"
-#include "hair/stage_app.h"
-#include "hair/typeify.h"
-#include "hair/typeify_io.h"
 
 int main(int argc, char** argv) {
   hair::StageApp app("typeify",

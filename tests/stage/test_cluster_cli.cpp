@@ -10,11 +10,11 @@
 #include <set>
 #include <tuple>
 
-#include "hair/clustering_io.h"
+#include "hair/cluster/clustering_io.h"
+#include "hair/core/strand_set.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
-#include "hair/strand_set.h"
 #include "stage/clean_failures.h"
 #include "support/run_command.h"
 

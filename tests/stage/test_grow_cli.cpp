@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "hair/grow_io.h"
+#include "hair/core/strand_set.h"
+#include "hair/grow/grow_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
-#include "hair/strand_set.h"
 #include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
 #include "support/run_command.h"

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "hair/frames_io.h"
+#include "hair/export/strand_export.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
-#include "hair/strand_export.h"
+#include "hair/interp/frames_io.h"
 #include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
 #include "support/run_command.h"

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "hair/guides_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
-#include "hair/hair_style.h"
+#include "hair/sim/guides_io.h"
+#include "hair/style/hair_style.h"
 #include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
 #include "support/run_command.h"

@@ -4,9 +4,9 @@
 
 #include <filesystem>
 
+#include "hair/cluster/typeify_io.h"
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
-#include "hair/typeify_io.h"
 #include "support/run_command.h"
 
 namespace {

@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "hair/extract.h"
-#include "hair/group_scalp_distance.h"
-#include "hair/hair_clustering.h"
-#include "hair/typeify.h"
+#include "hair/cluster/group_scalp_distance.h"
+#include "hair/cluster/hair_clustering.h"
+#include "hair/cluster/typeify.h"
+#include "hair/extract/extract.h"
 
 namespace hair::testing {
 

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "hair/strand_set.h"
-#include "hair/triangle_mesh_distance.h"
+#include "hair/core/strand_set.h"
+#include "hair/geom/triangle_mesh_distance.h"
 
 namespace hair::testing {
 

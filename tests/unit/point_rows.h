@@ -4,7 +4,7 @@
 #include <array>
 #include <initializer_list>
 
-#include "hair/strand_set.h"
+#include "hair/core/strand_set.h"
 
 namespace hair::test {
 

@@ -3,8 +3,8 @@
 
 #include <Eigen/Core>
 
-#include "hair/altitude_strand.h"
-#include "hair/strand_dynamics.h"
+#include "hair/sim/altitude_strand.h"
+#include "hair/sim/strand_dynamics.h"
 
 namespace hair::testing {
 

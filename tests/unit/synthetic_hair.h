@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "hair/poly_mesh.h"
+#include "hair/mesh/poly_mesh.h"
 
 namespace hair::testing {
 

@@ -9,9 +9,9 @@
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/provenance.h"
 
 namespace hair::testing {
 

@@ -8,11 +8,11 @@
 #include <iostream>
 #include <numbers>
 
-#include "hair/error.h"
-#include "hair/frame_range.h"
-#include "hair/frames_io.h"
+#include "hair/core/error.h"
+#include "hair/core/frame_range.h"
+#include "hair/export/strand_export.h"
 #include "hair/h5/file.h"
-#include "hair/strand_export.h"
+#include "hair/interp/frames_io.h"
 
 namespace {
 

@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <iostream>
 
-#include "hair/error.h"
-#include "hair/extract_io.h"
-#include "hair/grow_io.h"
-#include "hair/grow_measures.h"
+#include "hair/core/error.h"
+#include "hair/extract/extract_io.h"
+#include "hair/grow/grow_io.h"
+#include "hair/grow/grow_measures.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"
 

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <string>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/file.h"
 #include "hair/h5/inspect_report.h"
 #include "hair/h5/schema.h"

@@ -11,25 +11,25 @@
 #include <algorithm>
 #include <iostream>
 
-#include "hair/clustering_io.h"
-#include "hair/error.h"
-#include "hair/extract_io.h"
-#include "hair/frames_io.h"
-#include "hair/grow_io.h"
-#include "hair/guides_io.h"
+#include "hair/cluster/clustering_io.h"
+#include "hair/cluster/typeify_io.h"
+#include "hair/core/error.h"
+#include "hair/extract/extract_io.h"
+#include "hair/grow/grow_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
 #include "hair/h5/schema_validation.h"
+#include "hair/interp/frames_io.h"
 #include "hair/render/cluster_picture.h"
 #include "hair/render/extract_picture.h"
 #include "hair/render/frames_picture.h"
 #include "hair/render/grow_picture.h"
 #include "hair/render/guides_picture.h"
 #include "hair/render/style_picture.h"
-#include "hair/style_io.h"
-#include "hair/style_labels.h"
-#include "hair/typeify_io.h"
+#include "hair/sim/guides_io.h"
+#include "hair/style/style_io.h"
+#include "hair/style/style_labels.h"
 
 namespace {
 

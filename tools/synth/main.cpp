@@ -9,11 +9,11 @@
 #include <iostream>
 #include <opencv2/core.hpp>
 
-#include "hair/atomic_file.h"
-#include "hair/error.h"
+#include "hair/core/atomic_file.h"
+#include "hair/core/error.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/mesh_io.h"
-#include "hair/provenance.h"
+#include "hair/mesh/mesh_io.h"
 #include "hair/render/strand_render.h"
 #include "hair/render/synth_gallery.h"
 #include "hair/synth/synth_io.h"

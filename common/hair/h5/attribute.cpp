@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <charconv>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/dtype.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/dtype.h"
 #include "hair/h5/file.h"
 

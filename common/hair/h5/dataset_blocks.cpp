@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/dataset.h"
 
 namespace hair::h5 {

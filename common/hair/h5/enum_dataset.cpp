@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 
 namespace hair::h5 {
 

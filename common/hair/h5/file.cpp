@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 
 namespace hair::h5 {
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <cstring>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/chunk_compression.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/dtype.h"

@@ -1,12 +1,12 @@
 #include "hair/h5/inspect_report.h"
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/attribute.h"
+#include "hair/h5/provenance.h"
 #include "hair/h5/schema.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/h5/tree.h"
 #include "hair/h5/tree_text.h"
-#include "hair/provenance.h"
 
 namespace hair::h5 {
 

@@ -6,7 +6,7 @@
 #include <regex>
 #include <set>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/embedded_schemas.h"
 
 namespace hair::h5 {

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/file.h"
 #include "hair/h5/schema.h"
 

@@ -2,7 +2,7 @@
 
 #include <type_traits>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/dataset.h"
 
 namespace hair::h5 {

@@ -2,8 +2,8 @@
 
 #include <string>
 
+#include "hair/core/strand_set.h"
 #include "hair/h5/file.h"
-#include "hair/strand_set.h"
 
 namespace hair::h5 {
 

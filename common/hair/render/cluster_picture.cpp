@@ -5,9 +5,9 @@
 #include <variant>
 #include <vector>
 
-#include "hair/clustering_io.h"
-#include "hair/error.h"
-#include "hair/extract_io.h"
+#include "hair/cluster/clustering_io.h"
+#include "hair/core/error.h"
+#include "hair/extract/extract_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 
-#include "hair/error.h"
-#include "hair/extract_io.h"
+#include "hair/cluster/typeify_io.h"
+#include "hair/core/error.h"
+#include "hair/extract/extract_io.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/h5/strand_set_io.h"
 #include "hair/render/style_picture.h"
-#include "hair/style_labels.h"
-#include "hair/typeify_io.h"
+#include "hair/style/style_labels.h"
 
 namespace hair {
 namespace {

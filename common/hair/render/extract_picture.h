@@ -33,7 +33,7 @@ cv::Mat types_picture(const h5::File& types, const h5::File& extract, const Rend
 /// with a legend: normal yellow, fixed brown, short green, braided blue (the paper's
 /// Fig. 9 and the synthetic gallery), grey for a group without a style.
 ///
-/// @param group_style  #groups style codes (hair/style_labels.h), -1 for none
+/// @param group_style  #groups style codes (hair/style/style_labels.h), -1 for none
 cv::Mat style_picture(const h5::File& extract, const std::vector<int8_t>& group_style,
                       const RenderOptions& options);
 

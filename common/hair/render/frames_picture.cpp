@@ -7,8 +7,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "hair/error.h"
-#include "hair/extract_io.h"
+#include "hair/core/error.h"
+#include "hair/extract/extract_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/render/style_picture.h"
 

@@ -5,10 +5,10 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "hair/frames_io.h"
+#include "hair/geom/triangle_mesh_distance.h"
 #include "hair/h5/file.h"
+#include "hair/interp/frames_io.h"
 #include "hair/render/strand_render.h"
-#include "hair/triangle_mesh_distance.h"
 
 namespace hair {
 

@@ -2,9 +2,9 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "hair/error.h"
-#include "hair/extract_io.h"
-#include "hair/grow_io.h"
+#include "hair/core/error.h"
+#include "hair/extract/extract_io.h"
+#include "hair/grow/grow_io.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/schema_validation.h"

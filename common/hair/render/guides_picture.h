@@ -3,11 +3,11 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "hair/guides_io.h"
+#include "hair/core/strand_set.h"
+#include "hair/geom/triangle_mesh_distance.h"
 #include "hair/h5/file.h"
 #include "hair/render/strand_render.h"
-#include "hair/strand_set.h"
-#include "hair/triangle_mesh_distance.h"
+#include "hair/sim/guides_io.h"
 
 namespace hair {
 

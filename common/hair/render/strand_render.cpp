@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 #include <tuple>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 
 namespace hair {
 namespace {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "hair/strand_set.h"
-#include "hair/triangle_mesh_distance.h"
+#include "hair/core/strand_set.h"
+#include "hair/geom/triangle_mesh_distance.h"
 
 namespace hair {
 

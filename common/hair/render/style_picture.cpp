@@ -2,12 +2,12 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "hair/error.h"
-#include "hair/extract_io.h"
-#include "hair/grow_io.h"
+#include "hair/core/error.h"
+#include "hair/extract/extract_io.h"
+#include "hair/grow/grow_io.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"
-#include "hair/style_io.h"
+#include "hair/style/style_io.h"
 
 namespace hair {
 

@@ -1,7 +1,7 @@
 #include "hair/render/synth_gallery.h"
 
+#include "hair/geom/triangle_mesh_distance.h"
 #include "hair/render/style_picture.h"
-#include "hair/triangle_mesh_distance.h"
 
 namespace hair {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "hair/extract.h"
+#include "hair/extract/extract.h"
 #include "hair/synth/synth_model.h"
 
 namespace hair::synth {

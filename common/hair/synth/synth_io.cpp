@@ -6,7 +6,7 @@
 #include <array>
 #include <type_traits>
 
-#include "hair/error.h"
+#include "hair/core/error.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"

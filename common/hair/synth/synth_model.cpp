@@ -8,9 +8,9 @@
 #include <numeric>
 #include <random>
 
-#include "hair/body_measures.h"
-#include "hair/error.h"
-#include "hair/triangle_mesh_distance.h"
+#include "hair/core/error.h"
+#include "hair/geom/triangle_mesh_distance.h"
+#include "hair/mesh/body_measures.h"
 
 namespace hair::synth {
 

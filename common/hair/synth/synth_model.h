@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "hair/hair_style.h"
-#include "hair/poly_mesh.h"
-#include "hair/strand_set.h"
+#include "hair/core/strand_set.h"
+#include "hair/mesh/poly_mesh.h"
+#include "hair/style/hair_style.h"
 
 namespace hair::synth {
 

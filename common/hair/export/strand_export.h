@@ -1,0 +1,62 @@
+#pragma once
+// Exports of strands that hair tools read, and readers for the round-trip tests:
+// OBJ polylines, cyHair .hair (Cem Yuksel's format), and ASCII USD (.usda) BasisCurves
+// with animated points and the Alembic groom attributes (groom_id, groom_guide,
+// groom_root_uv, width) as primvars. docs/interpolate.md describes the mapping.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hair/core/strand_set.h"
+
+namespace hair {
+
+/// Writes `strands` as an OBJ file of polylines: a `v x y z` line per point (metres, 9
+/// significant digits, so float32 values read back exactly) and an `l i j k ...` line per
+/// strand (1-based). Throws Error::runtime naming `path` if it cannot be written.
+void write_obj_polylines(const std::filesystem::path& path, const StrandSet& strands,
+                         const std::string& comment = {});
+
+/// Reads the `v` and `l` lines of an OBJ file as strands (each `l` line one strand, in
+/// order). Throws Error::bad_input naming the file and line for what it cannot read.
+StrandSet read_obj_polylines(const std::filesystem::path& path);
+
+/// Writes `strands` as a cyHair file (.hair, www.cemyuksel.com/research/hairmodels): a
+/// 128-byte header ("HAIR", counts, the arrays present: segments, points, thickness),
+/// the segments per strand (uint16), the points (float32 xyz), a thickness per point
+/// (`thickness_m`, may be empty for none). Throws Error::usage for a strand of more than
+/// 65,536 points or of fewer than 2, Error::runtime if the file cannot be written.
+void write_cyhair(const std::filesystem::path& path, const StrandSet& strands,
+                  const std::vector<float>& thickness_m, const std::string& info = {});
+
+/// Reads a cyHair file's strands (with its default segment count where it has no segments
+/// array). Throws Error::bad_input naming the file for a wrong signature or a short file.
+StrandSet read_cyhair(const std::filesystem::path& path);
+
+/// What write_usda() writes besides the points.
+struct UsdaCurves {
+  std::vector<int64_t> offsets;          ///< CSR offsets of the strands (#strands + 1)
+  std::vector<int32_t> groom_id;         ///< per strand
+  std::vector<int32_t> groom_guide;      ///< per strand: 1 for a strand that is a guide
+  std::vector<Eigen::Vector2f> root_uv;  ///< per strand
+  std::vector<int32_t> cluster;          ///< per strand
+  std::vector<int32_t> style;            ///< per strand (HairStyle values, -1 none)
+  std::vector<float> width_m;            ///< per point
+  double fps = 30;
+  std::string comment;  ///< goes into the layer's doc string
+};
+
+/// Writes an ASCII USD layer: /Groom (Xform, metres: metersPerUnit 1, Y up) with a
+/// BasisCurves prim "Strands" (type linear, curveVertexCounts, widths per vertex, the
+/// primvars groom_id, groom_guide, groom_root_uv, cluster and style per curve) whose
+/// points are time-sampled at `frames` (time codes) by `frame_points(k)` (#points x 3 of
+/// the k-th frame); time codes per second = fps. Throws Error::runtime naming `path`.
+void write_usda(const std::filesystem::path& path, const UsdaCurves& curves,
+                const std::vector<int64_t>& frames,
+                const std::function<Points3f(size_t)>& frame_points);
+
+}  // namespace hair

@@ -1,0 +1,504 @@
+#include "hair/extract/extract.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hair/core/error.h"
+#include "hair/geom/point_index.h"
+#include "hair/mesh/mesh_checks.h"
+#include "hair/mesh/mesh_patches.h"
+#include "hair/mesh/quad_recovery.h"
+
+namespace hair {
+namespace {
+
+/// The rails of one quad region, before and after orientation.
+struct RegionRails {
+  int32_t patch = 0;
+  size_t region_in_patch = 0;
+  std::vector<std::vector<int32_t>> open_rails;    ///< consistently oriented chains
+  std::vector<std::vector<int32_t>> parted_rails;  ///< halves of parted rails, top down
+  OrientationEvidence evidence;
+  std::optional<OrientationDecision> decision;
+};
+
+/// The share of observations that are true, or nullopt with fewer than 3.
+std::optional<double> share_true(const std::vector<bool>& observations) {
+  if (observations.size() < 3) return std::nullopt;
+  return static_cast<double>(std::count(observations.begin(), observations.end(), true)) /
+         static_cast<double>(observations.size());
+}
+
+/// Picks the family of each quad region that runs along the hair: the family with
+/// clearly longer chains; where the two are alike (square cards, caps), the family
+/// that follows the mesh's texture axis, learnt from the clear regions.
+std::vector<std::vector<int>> along_families(const std::vector<PatchTopology>& topologies,
+                                             const ExtractParams& params) {
+  constexpr double min_alignment_difference = 0.2;
+  std::vector<bool> along_is_v;  // clear regions: does the along family follow v?
+  for (const PatchTopology& topology : topologies)
+    for (const QuadRegion& region : topology.regions) {
+      const auto& f = region.families;
+      double longer = std::max(f[0].mean_chain_length, f[1].mean_chain_length);
+      double shorter = std::min(f[0].mean_chain_length, f[1].mean_chain_length);
+      if (f[0].v_alignment < 0 || longer < params.along_length_ratio * shorter ||
+          std::abs(f[0].v_alignment - f[1].v_alignment) < min_alignment_difference)
+        continue;
+      int along = f[0].mean_chain_length > f[1].mean_chain_length ? 0 : 1;
+      along_is_v.push_back(f[along].v_alignment > f[1 - along].v_alignment);
+    }
+  std::optional<bool> texture_axis_is_v;
+  if (auto share = share_true(along_is_v)) {
+    if (*share >= params.convention_min_agreement) texture_axis_is_v = true;
+    if (*share <= 1 - params.convention_min_agreement) texture_axis_is_v = false;
+  }
+
+  std::vector<std::vector<int>> along(topologies.size());
+  for (size_t p = 0; p < topologies.size(); ++p)
+    for (const QuadRegion& region : topologies[p].regions) {
+      const auto& f = region.families;
+      int longer = f[0].mean_chain_length >= f[1].mean_chain_length ? 0 : 1;
+      bool clear = f[longer].mean_chain_length >=
+                   params.along_length_ratio * f[1 - longer].mean_chain_length;
+      bool texture_tells =
+          texture_axis_is_v && f[0].v_alignment >= 0 &&
+          std::abs(f[0].v_alignment - f[1].v_alignment) >= min_alignment_difference;
+      if (clear || !texture_tells) {
+        along[p].push_back(longer);
+      } else {
+        int v_family = f[0].v_alignment > f[1].v_alignment ? 0 : 1;
+        along[p].push_back(*texture_axis_is_v ? v_family : 1 - v_family);
+      }
+    }
+  return along;
+}
+
+/// Parts a closed rail (first id repeated last) at its highest and lowest points into
+/// two halves that both run downwards.
+std::array<std::vector<int32_t>, 2> part_closed_rail(const Points3f& vertices,
+                                                     std::vector<int32_t> ring) {
+  ring.pop_back();
+  size_t n = ring.size();
+  size_t top = 0, bottom = 0;
+  for (size_t i = 1; i < n; ++i) {
+    if (vertices(ring[i], 1) > vertices(ring[top], 1)) top = i;
+    if (vertices(ring[i], 1) < vertices(ring[bottom], 1)) bottom = i;
+  }
+  if (bottom == top) bottom = (top + n / 2) % n;
+  std::array<std::vector<int32_t>, 2> halves;
+  for (size_t i = top;; i = (i + 1) % n) {  // forwards from the top
+    halves[0].push_back(ring[i]);
+    if (i == bottom) break;
+  }
+  for (size_t i = top;; i = (i + n - 1) % n) {  // backwards from the top
+    halves[1].push_back(ring[i]);
+    if (i == bottom) break;
+  }
+  return halves;
+}
+
+double rail_length(const Points3f& vertices, const std::vector<int32_t>& rail) {
+  double length = 0;
+  for (size_t i = 1; i < rail.size(); ++i)
+    length += (vertices.row(rail[i]) - vertices.row(rail[i - 1])).cast<double>().norm();
+  return length;
+}
+
+/// A rail draped over the head (a card from one side over the parting to the other)
+/// has its root inside: its highest point is at least `min_side_share` of its length
+/// from either end, both ends lie lower by `min_side_drop` of their side's length, and
+/// both ends hang off the head (farther than `min_end_distance` from it; a cap's rail
+/// from the hairline over the crown to a band has both ends on the head).
+/// Returns the two halves, both from the highest point down, or nothing.
+std::optional<std::array<std::vector<int32_t>, 2>> part_draped_rail(
+    const Points3f& vertices, const std::vector<int32_t>& rail, double min_side_share,
+    double min_side_drop, const TriangleMeshDistance& head_distance, double min_end_distance) {
+  size_t top = 0;
+  for (size_t i = 1; i < rail.size(); ++i)
+    if (vertices(rail[i], 1) > vertices(rail[top], 1)) top = i;
+  if (top == 0 || top + 1 == rail.size()) return std::nullopt;
+  std::vector<int32_t> before(rail.begin(), rail.begin() + static_cast<std::ptrdiff_t>(top) + 1);
+  std::vector<int32_t> after(rail.begin() + static_cast<std::ptrdiff_t>(top), rail.end());
+  std::reverse(before.begin(), before.end());
+  double total = rail_length(vertices, rail);
+  for (const auto* side : {&before, &after}) {
+    double length = rail_length(vertices, *side);
+    double drop = vertices(side->front(), 1) - vertices(side->back(), 1);
+    if (length < min_side_share * total || drop < min_side_drop * length) return std::nullopt;
+    if (head_distance.distance(vertices.row(side->back()).cast<double>().transpose()) <
+        min_end_distance)
+      return std::nullopt;
+  }
+  return std::array<std::vector<int32_t>, 2>{before, after};
+}
+
+/// What the rails of a region say about their direction (see OrientationEvidence).
+OrientationEvidence orientation_evidence(const Points3f& vertices,
+                                         const std::vector<std::vector<int32_t>>& rails,
+                                         const EdgeFamily& along_family,
+                                         const TriangleMeshDistance& head_distance,
+                                         const ExtractParams& params) {
+  OrientationEvidence evidence;
+  evidence.head_distance_min_m = std::numeric_limits<double>::infinity();
+  double growing = 0, falling = 0, total_length = 0, distance_change = 0, height_drop = 0;
+  for (const auto& rail : rails) {
+    double length = rail_length(vertices, rail);
+    int64_t steps_up = 0;
+    for (size_t i = 1; i < rail.size(); ++i) steps_up += rail[i] > rail[i - 1] ? 1 : 0;
+    double share_up = static_cast<double>(steps_up) / static_cast<double>(rail.size() - 1);
+    if (share_up >= params.ordered_rail_fraction) growing += length;
+    if (share_up <= 1 - params.ordered_rail_fraction) falling += length;
+    Eigen::Vector3d first = vertices.row(rail.front()).cast<double>().transpose();
+    Eigen::Vector3d last = vertices.row(rail.back()).cast<double>().transpose();
+    double first_distance = head_distance.distance(first),
+           last_distance = head_distance.distance(last);
+    distance_change += last_distance - first_distance;
+    evidence.head_distance_min_m =
+        std::min({evidence.head_distance_min_m, first_distance, last_distance});
+    height_drop += first.y() - last.y();
+    total_length += length;
+  }
+  evidence.has_ordered_rails = growing + falling > 0;
+  if (evidence.has_ordered_rails)
+    evidence.vertex_order_vote = (growing - falling) / (growing + falling);
+  if (rails.empty()) evidence.head_distance_min_m = 0;
+  if (total_length > 0) {
+    evidence.scalp_distance_slope = distance_change / total_length;
+    evidence.height_slope = height_drop / total_length;
+  }
+  if (along_family.v_alignment >= 0) evidence.uv_growth = along_family.v_growth;
+  return evidence;
+}
+
+/// Learns what the mesh's confidently decided regions say: whether its vertex ids
+/// are to be trusted against the head distance, and its texture's v direction.
+MeshConventions mesh_conventions(std::vector<RegionRails>& regions,
+                                 const OrientationThresholds& thresholds,
+                                 const ExtractParams& params) {
+  MeshConventions conventions;
+  std::vector<bool> ids_agree_with_distance;
+  for (const RegionRails& region : regions) {
+    const OrientationEvidence& e = region.evidence;
+    if (e.has_ordered_rails && std::abs(e.vertex_order_vote) >= thresholds.vertex_order_min_vote &&
+        std::abs(e.scalp_distance_slope) >= thresholds.scalp_distance_min_slope)
+      ids_agree_with_distance.push_back((e.vertex_order_vote < 0) == (e.scalp_distance_slope < 0));
+  }
+  if (auto share = share_true(ids_agree_with_distance); share && *share < 0.5)
+    conventions.trust_vertex_order = false;
+
+  std::vector<bool> v_grows_to_tip;
+  for (RegionRails& region : regions) {
+    if (!conventions.trust_vertex_order) region.evidence.has_ordered_rails = false;
+    region.decision = decide_orientation(region.evidence, thresholds, std::nullopt);
+    const auto& growth = region.evidence.uv_growth;
+    if (region.decision && growth && std::abs(*growth) >= thresholds.uv_min_growth)
+      v_grows_to_tip.push_back((*growth > 0) != region.decision->reverse);
+  }
+  if (auto share = share_true(v_grows_to_tip)) {
+    if (*share >= params.convention_min_agreement) conventions.uv_growth_sign = 1;
+    if (*share <= 1 - params.convention_min_agreement) conventions.uv_growth_sign = -1;
+  }
+  return conventions;
+}
+
+/// The end of an oriented strand of a decided patch, and the hair's flow there.
+struct StrandEnd {
+  bool is_root = false;
+  Eigen::Vector3f flow;  ///< unit direction root to tip at this end
+  int32_t patch = 0;
+};
+
+/// Unit direction of the rail's first (or last) segment, from its first to its last point.
+Eigen::Vector3f end_direction(const Points3f& vertices, const std::vector<int32_t>& rail,
+                              bool at_last) {
+  Eigen::Vector3f d = at_last ? Eigen::Vector3f(vertices.row(rail[rail.size() - 1]) -
+                                                vertices.row(rail[rail.size() - 2]))
+                              : Eigen::Vector3f(vertices.row(rail[1]) - vertices.row(rail[0]));
+  float norm = d.norm();
+  return norm > 0 ? Eigen::Vector3f(d / norm) : Eigen::Vector3f::Zero();
+}
+
+/// One round of continuation: decides regions left open from the oriented strands of
+/// other patches (decided regions, parted rails) whose ends lie within `radius` of a
+/// rail's ends. The nearest such end E' at a rail end E, with the rail's outward
+/// direction u at E (pointing out of the rail) and the hair's flow f at E', says:
+///  - E' a root: other hair starts where the rail ends, E is the rail's tip, at any
+///    angle (a tail leaves a ponytail's band downwards while cap strands arrive there
+///    from all sides);
+///  - E' a tip: if the rail carries that flow on (-u . f > cos 60 deg), E is the rail's
+///    root (continuation); otherwise both arrive at one place and E is a tip too
+///    (convergence, as cap strands meet at the band).
+/// A region is decided when at least half of its rails have a neighbour and three
+/// quarters of their votes agree. Returns how many regions it decided.
+int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRails>& regions,
+                                float radius) {
+  constexpr float aligned = 0.5f;  // cos 60 degrees
+  std::vector<StrandEnd> ends;
+  std::vector<Eigen::Vector3f> positions;
+  auto add_ends = [&](std::vector<int32_t> rail, bool reverse, int32_t patch) {
+    if (reverse) std::reverse(rail.begin(), rail.end());
+    positions.push_back(vertices.row(rail.front()).transpose());
+    ends.push_back({true, end_direction(vertices, rail, false), patch});
+    positions.push_back(vertices.row(rail.back()).transpose());
+    ends.push_back({false, end_direction(vertices, rail, true), patch});
+  };
+  for (const RegionRails& region : regions) {
+    for (const auto& rail : region.parted_rails) add_ends(rail, false, region.patch);
+    if (region.decision)
+      for (const auto& rail : region.open_rails)
+        add_ends(rail, region.decision->reverse, region.patch);
+  }
+  if (ends.empty()) return 0;
+  Points3f end_points(static_cast<Eigen::Index>(positions.size()), 3);
+  for (size_t i = 0; i < positions.size(); ++i)
+    end_points.row(static_cast<Eigen::Index>(i)) = positions[i].transpose();
+  PointIndex index(end_points);
+
+  // +1: this end of the rail is its root; -1: its tip; 0: no neighbour.
+  auto end_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch) {
+    for (int32_t id : index.within(point, radius)) {  // nearest first
+      const StrandEnd& other = ends[id];
+      if (other.patch == patch) continue;
+      if (other.is_root) return -1;
+      return -outward.dot(other.flow) > aligned ? 1 : -1;
+    }
+    return 0;
+  };
+
+  std::vector<std::optional<OrientationDecision>> decided(regions.size());
+  for (size_t r = 0; r < regions.size(); ++r) {
+    const RegionRails& region = regions[r];
+    if (region.decision || region.open_rails.empty()) continue;
+    double forward = 0, backward = 0, rails_with_neighbour = 0;
+    for (const auto& rail : region.open_rails) {
+      int first_is_root = end_vote(vertices.row(rail.front()).transpose(),
+                                   -end_direction(vertices, rail, false), region.patch);
+      int last_is_root = end_vote(vertices.row(rail.back()).transpose(),
+                                  end_direction(vertices, rail, true), region.patch);
+      int score = first_is_root - last_is_root;  // > 0: the rail runs as it is
+      forward += score > 0 ? 1 : 0;
+      backward += score < 0 ? 1 : 0;
+      rails_with_neighbour += first_is_root != 0 || last_is_root != 0 ? 1 : 0;
+    }
+    double votes = forward + backward;
+    if (rails_with_neighbour < 0.5 * static_cast<double>(region.open_rails.size()) || votes == 0 ||
+        std::abs(forward - backward) < 0.5 * votes)
+      continue;
+    decided[r] = OrientationDecision{backward > forward, OrientationRule::continuation,
+                                     static_cast<float>(std::abs(forward - backward) / votes)};
+  }
+  int count = 0;
+  for (size_t r = 0; r < regions.size(); ++r)  // applied together: order does not matter
+    if (decided[r]) {
+      regions[r].decision = decided[r];
+      ++count;
+    }
+  return count;
+}
+
+/// Continuation in rounds, so that a decision travels along chains of patches (a cap
+/// made of several patches meeting the tail at one of them), at most `max_rounds`.
+void decide_by_continuation(const Points3f& vertices, std::vector<RegionRails>& regions,
+                            float radius, int max_rounds = 16) {
+  for (int round = 0; round < max_rounds; ++round)
+    if (decide_by_continuation_once(vertices, regions, radius) == 0) return;
+}
+
+/// Marks body triangles above the neck lying within `max_distance` of the hair mesh.
+std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
+                                     const Triangles3i& body_triangles, double neck_y,
+                                     const PolyMesh& hair_mesh, double max_distance) {
+  TriangleMeshDistance hair_distance(
+      hair_mesh.vertices, fan_triangulation(hair_mesh.face_offsets, hair_mesh.face_vertices));
+  std::vector<uint8_t> scalp(static_cast<size_t>(body_triangles.rows()), 0);
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index t = 0; t < body_triangles.rows(); ++t) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      centroid += body_vertices.row(body_triangles(t, k)).cast<double>().transpose() / 3.0;
+    if (centroid.y() >= neck_y && hair_distance.is_within(centroid, max_distance)) scalp[t] = 1;
+  }
+  return scalp;
+}
+
+void append_rail(std::vector<Points3f>& polylines, const Points3f& vertices,
+                 const std::vector<int32_t>& rail, std::vector<int32_t>& source_vertex) {
+  Points3f points(static_cast<Eigen::Index>(rail.size()), 3);
+  for (size_t i = 0; i < rail.size(); ++i)
+    points.row(static_cast<Eigen::Index>(i)) = vertices.row(rail[i]);
+  polylines.push_back(std::move(points));
+  source_vertex.insert(source_vertex.end(), rail.begin(), rail.end());
+}
+
+}  // namespace
+
+ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
+                              const std::string& hair_file, const std::string& body_file) {
+  ExtractResult result;
+  MeshCleanup cleanup = clean_mesh(hair_mesh, hair_file);
+  clean_mesh(body_mesh, body_file);
+  hair_mesh.vertices *= static_cast<float>(params.unit_scale);
+  body_mesh.vertices *= static_cast<float>(params.unit_scale);
+  result.stats.degenerate_faces_removed = cleanup.degenerate_faces_removed;
+
+  // The body: head height H, head region, triangles.
+  result.head = head_measures(body_mesh, body_file);
+  if (params.head_height_m > 0) {
+    result.head.head_height = params.head_height_m;
+    result.head.neck_y = result.head.head_top_y - params.head_height_m;
+  }
+  result.body_vertices = body_mesh.vertices;
+  result.body_triangles = fan_triangulation(body_mesh.face_offsets, body_mesh.face_vertices);
+  Triangles3i head_triangles(result.body_triangles.rows(), 3);
+  Eigen::Index head_triangle_count = 0;
+  for (Eigen::Index t = 0; t < result.body_triangles.rows(); ++t) {
+    double top_y = -std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k)
+      top_y = std::max<double>(top_y, result.body_vertices(result.body_triangles(t, k), 1));
+    if (top_y >= result.head.neck_y)
+      head_triangles.row(head_triangle_count++) = result.body_triangles.row(t);
+  }
+  head_triangles.conservativeResize(head_triangle_count, 3);
+  if (head_triangle_count == 0)
+    throw Error::bad_input(body_file, "body mesh has no head above the neck");
+  TriangleMeshDistance head_distance(result.body_vertices, head_triangles);
+
+  // The hair: quads, patches, edge families.
+  QuadRecovery recovered = quads_from_triangles(hair_mesh, params.max_quad_corner_deviation_deg);
+  result.stats.triangles_paired = recovered.triangles_paired;
+  result.stats.triangles_left = recovered.triangles_left;
+  result.hair_mesh = std::move(recovered.mesh);
+  const Points3f& vertices = result.hair_mesh.vertices;
+  MeshPatches patches = mesh_patches(result.hair_mesh);
+  result.face_group = patches.face_patch;
+  std::vector<PatchTopology> topologies(static_cast<size_t>(patches.patch_count()));
+#pragma omp parallel for schedule(dynamic)
+  for (int32_t p = 0; p < patches.patch_count(); ++p)
+    topologies[p] = patch_topology(result.hair_mesh, patches.patch_faces[p]);
+  std::vector<std::vector<int>> along = along_families(topologies, params);
+
+  // Rails of every region, and what they say about their direction.
+  std::vector<RegionRails> regions;
+  for (int32_t p = 0; p < patches.patch_count(); ++p) {
+    result.stats.family_conflicts += topologies[p].family_conflicts;
+    for (size_t r = 0; r < topologies[p].regions.size(); ++r) {
+      RegionRails region;
+      region.patch = p;
+      region.region_in_patch = r;
+      const EdgeFamily& along_family = topologies[p].regions[r].families[along[p][r]];
+      double longest = 0;
+      for (const auto& chain : along_family.chains)
+        longest = std::max(longest, rail_length(vertices, chain));
+      for (const auto& chain : along_family.chains) {
+        if (rail_length(vertices, chain) < params.min_rail_length_share * longest) {
+          ++result.stats.fragments_dropped;
+        } else if (chain.size() > 2 && chain.front() == chain.back()) {
+          for (auto& half : part_closed_rail(vertices, chain)) region.parted_rails.push_back(half);
+          ++result.stats.rails_parted;
+        } else if (auto halves = part_draped_rail(
+                       vertices, chain, params.parting_min_side_share, params.parting_min_side_drop,
+                       head_distance,
+                       params.parting_min_end_distance_h * result.head.head_height)) {
+          for (auto& half : *halves) region.parted_rails.push_back(half);
+          ++result.stats.rails_parted;
+        } else {
+          region.open_rails.push_back(chain);
+        }
+      }
+      regions.push_back(std::move(region));
+    }
+  }
+#pragma omp parallel for schedule(dynamic)
+  for (size_t i = 0; i < regions.size(); ++i) {
+    const RegionRails& region = regions[i];
+    int32_t p = region.patch;
+    size_t r = region.region_in_patch;
+    regions[i].evidence =
+        orientation_evidence(vertices, region.open_rails,
+                             topologies[p].regions[r].families[along[p][r]], head_distance, params);
+  }
+
+  // Decide directions: confident regions first, then the mesh's conventions for the rest.
+  OrientationThresholds thresholds{params.vertex_order_min_vote, params.scalp_distance_min_slope,
+                                   params.uv_min_growth, params.height_min_slope,
+                                   params.height_min_head_distance_h * result.head.head_height};
+  MeshConventions conventions = mesh_conventions(regions, thresholds, params);
+  result.stats.vertex_order_trusted = conventions.trust_vertex_order;
+  result.stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
+  decide_by_continuation(
+      vertices, regions,
+      static_cast<float>(params.continuation_radius_h * result.head.head_height));
+  for (RegionRails& region : regions)
+    if (!region.decision)
+      region.decision = decide_orientation(region.evidence, thresholds, conventions);
+
+  // Strands, group by group.
+  std::vector<Points3f> polylines;
+  std::vector<int32_t> strand_group, strand_rail, source_vertex;
+  size_t next_region = 0;
+  for (int32_t p = 0; p < patches.patch_count(); ++p) {
+    int32_t rail_in_patch = 0;
+    size_t largest_rail_count = 0;
+    OrientationDecision group_decision{false, OrientationRule::height, 0.0f};
+    auto add_rail = [&](const std::vector<int32_t>& rail) {
+      append_rail(polylines, vertices, rail, source_vertex);
+      strand_group.push_back(p);
+      strand_rail.push_back(rail_in_patch++);
+    };
+    for (; next_region < regions.size() && regions[next_region].patch == p; ++next_region) {
+      RegionRails& region = regions[next_region];
+      for (auto& rail : region.open_rails) {
+        if (region.decision->reverse) std::reverse(rail.begin(), rail.end());
+        add_rail(rail);
+      }
+      for (const auto& rail : region.parted_rails) add_rail(rail);
+      size_t rail_count = region.open_rails.size() + region.parted_rails.size();
+      if (rail_count > largest_rail_count) {
+        largest_rail_count = rail_count;
+        group_decision = region.open_rails.size() >= region.parted_rails.size()
+                             ? *region.decision
+                             : OrientationDecision{false, OrientationRule::parting, 1.0f};
+      }
+    }
+    PatchKind kind = patch_kind(topologies[p], along[p]);
+    if (rail_in_patch == 0 || kind == PatchKind::triangle_soup) {
+      // No usable quads: one strand along the patch's principal axis.
+      kind = PatchKind::triangle_soup;
+      Points3f polyline = principal_axis_polyline(result.hair_mesh, patches.patch_faces[p]);
+      Eigen::Vector3d first = polyline.row(0).cast<double>().transpose();
+      Eigen::Vector3d last = polyline.row(polyline.rows() - 1).cast<double>().transpose();
+      double length = std::max(1e-12, (last - first).norm());
+      OrientationEvidence evidence;
+      evidence.scalp_distance_slope =
+          (head_distance.distance(last) - head_distance.distance(first)) / length;
+      evidence.height_slope = (first.y() - last.y()) / length;
+      group_decision =
+          *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
+      if (group_decision.reverse) polyline = polyline.colwise().reverse().eval();
+      polylines.push_back(polyline);
+      source_vertex.insert(source_vertex.end(), static_cast<size_t>(polyline.rows()), -1);
+      strand_group.push_back(p);
+      strand_rail.push_back(rail_in_patch++);
+    }
+    result.group_first_strand.push_back(static_cast<int32_t>(polylines.size()));
+    result.group_kind.push_back(kind);
+    result.group_rule.push_back(group_decision.rule);
+    result.group_confidence.push_back(group_decision.confidence);
+    result.group_face_count.push_back(static_cast<int32_t>(patches.patch_faces[p].size()));
+    ++result.stats.groups_by_rule[static_cast<size_t>(group_decision.rule)];
+    ++result.stats.groups_by_kind[static_cast<size_t>(kind)];
+  }
+  result.strands = strand_set_from_polylines(polylines);
+  result.strands.strand_attributes["group"] = std::move(strand_group);
+  result.strands.strand_attributes["rail"] = std::move(strand_rail);
+  result.strands.point_attributes["source_vertex"] = std::move(source_vertex);
+  check_strand_set(result.strands);
+
+  result.scalp_triangle =
+      scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,
+                      result.hair_mesh, params.scalp_distance_h * result.head.head_height);
+  return result;
+}
+
+}  // namespace hair

@@ -1,0 +1,107 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hair/core/strand_set.h"
+#include "hair/extract/strand_orientation.h"
+#include "hair/geom/triangle_mesh_distance.h"
+#include "hair/mesh/body_measures.h"
+#include "hair/mesh/patch_rails.h"
+#include "hair/mesh/poly_mesh.h"
+
+namespace hair {
+
+/// Settings of the extract stage (pipelines/default/extract.toml documents each).
+struct ExtractParams {
+  /// Source units to metres (MakeHuman meshes are in decimetres: 0.1).
+  double unit_scale = 1.0;
+  /// Head height H in metres; 0 measures it on the body (see head_measures()).
+  double head_height_m = 0.0;
+  /// Worst corner angle off 90 degrees for two triangles to be paired into a quad.
+  double max_quad_corner_deviation_deg = 60.0;
+  /// Ratio of mean chain lengths of the two edge families above which the longer
+  /// family is taken as running along the hair, whatever the texture says.
+  double along_length_ratio = 1.5;
+  /// A rail votes on vertex order when at least this fraction of its steps go the
+  /// same way (ids growing or falling).
+  double ordered_rail_fraction = 0.95;
+  /// Orientation thresholds (see OrientationThresholds).
+  double vertex_order_min_vote = 0.8;
+  double scalp_distance_min_slope = 0.2;
+  double uv_min_growth = 0.3;
+  double height_min_slope = 0.3;
+  double height_min_head_distance_h = 0.05;
+  /// Share of confidently decided regions that must agree on a texture convention
+  /// (v axis along the hair; v growing root to tip) for the mesh to use it.
+  double convention_min_agreement = 0.85;
+  /// A rail is parted at its highest point (a card draped over the head, or a loop)
+  /// when each side is at least this share of its length...
+  double parting_min_side_share = 0.25;
+  /// ...and each side's end lies lower than the top by this share of the side's length.
+  double parting_min_side_drop = 0.25;
+  /// ...and both ends hang off the head by more than this fraction of H.
+  double parting_min_end_distance_h = 0.1;
+  /// Along-chains shorter than this share of their region's longest are fragments
+  /// (colouring conflicts around poles) and are dropped.
+  double min_rail_length_share = 0.25;
+  /// Continuation: confident strands of other patches starting (or ending) within this
+  /// distance, as a fraction of H, of a rail's end tell that end is distal (proximal).
+  double continuation_radius_h = 0.08;
+  /// Body triangles above the neck within this distance of the hair mesh, as a
+  /// fraction of H, form the scalp.
+  double scalp_distance_h = 0.06;
+};
+
+/// How the along family of a quad region was chosen.
+enum class AlongRule : int8_t { chain_length = 0, texture_axis = 1 };
+
+/// Counts for the log and the closing report.
+struct ExtractStats {
+  int64_t degenerate_faces_removed = 0;
+  int64_t triangles_paired = 0;
+  int64_t triangles_left = 0;
+  int64_t rails_parted = 0;       ///< closed or draped rails cut in two at their top
+  int64_t fragments_dropped = 0;  ///< along-chains too short to be rails
+  int64_t family_conflicts = 0;
+  std::array<int64_t, 6> groups_by_rule{};  ///< indexed by OrientationRule
+  std::array<int64_t, 5> groups_by_kind{};  ///< indexed by PatchKind
+  bool vertex_order_trusted = true;
+  int uv_growth_sign = 0;  ///< the mesh's texture convention: +1, -1, or 0 for none
+};
+
+/// Everything extract.h5 holds (schemas/extract.json), in metres.
+struct ExtractResult {
+  /// Input strands, root first. Strand attributes "group" and "rail"; point
+  /// attribute "source_vertex" (id in hair_mesh).
+  StrandSet strands;
+  std::vector<int32_t> group_first_strand{0};  ///< #groups + 1
+  std::vector<PatchKind> group_kind;           ///< #groups
+  std::vector<OrientationRule> group_rule;     ///< #groups
+  std::vector<float> group_confidence;         ///< #groups
+  std::vector<int32_t> group_face_count;       ///< #groups
+
+  PolyMesh hair_mesh;               ///< cleaned, scaled, triangles paired into quads
+  std::vector<int32_t> face_group;  ///< #faces of hair_mesh
+
+  Points3f body_vertices;               ///< #body vertices x 3
+  Triangles3i body_triangles;           ///< #body triangles x 3
+  std::vector<uint8_t> scalp_triangle;  ///< #body triangles, 1 = scalp
+  HeadMeasures head;                    ///< in metres
+
+  ExtractStats stats;
+
+  int32_t group_count() const { return static_cast<int32_t>(group_kind.size()); }
+};
+
+/// Reads the input strands of a hair mesh (paper section 4.1): one strand group per
+/// patch, one strand per rail, every strand oriented root to tip; and measures the
+/// body: its head height H, the head region and the scalp. Pure: no file access;
+/// the file names only label errors. Deterministic for any thread count.
+///
+/// Throws hair::Error (bad_input) for empty or degenerate meshes and non-finite
+/// coordinates, naming the file.
+ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
+                              const std::string& hair_file, const std::string& body_file);
+
+}  // namespace hair

@@ -1,0 +1,68 @@
+#include "hair/extract/extract_params.h"
+
+namespace hair {
+
+void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
+  ExtractParams& p = values.extract;
+  params.add("unit_scale", p.unit_scale,
+             "metres per unit of the source meshes (MakeHuman: decimetres, 0.1)",
+             ParamRange::above(0));
+  params.add("head_height_m", p.head_height_m,
+             "head height H in metres; 0 measures it on the body (crown to the neck's waist)",
+             ParamRange::at_least(0));
+  params.add("mesh_reader", values.mesh_reader,
+             "how meshes are read: auto (native OBJ reader keeping vertex order, assimp for "
+             "other formats) or assimp (assimp for every format)",
+             {"auto", "assimp"});
+  params.add("max_quad_corner_deviation_deg", p.max_quad_corner_deviation_deg,
+             "worst corner angle off 90 degrees for two triangles to be paired into a quad",
+             ParamRange::closed(0, 90));
+  params.add("along_length_ratio", p.along_length_ratio,
+             "ratio of mean chain lengths of a patch's two edge families above which the "
+             "longer runs along the hair whatever the texture says",
+             ParamRange::at_least(1));
+  params.add("min_rail_length_share", p.min_rail_length_share,
+             "along-chains shorter than this share of their region's longest are dropped "
+             "as fragments",
+             ParamRange::closed(0, 1));
+  params.add("ordered_rail_fraction", p.ordered_rail_fraction,
+             "a rail votes on vertex order when this share of its steps go the same way",
+             ParamRange::closed(0.5, 1));
+  params.add("vertex_order_min_vote", p.vertex_order_min_vote,
+             "agreement of a patch's ordered rails (|grow - fall| / total) for vertex order "
+             "to decide",
+             ParamRange::closed(0, 1));
+  params.add("scalp_distance_min_slope", p.scalp_distance_min_slope,
+             "change of distance to the head per unit of rail length for the head distance "
+             "to decide",
+             ParamRange::above(0));
+  params.add("height_min_slope", p.height_min_slope,
+             "height change per unit of rail length that settles vertex order against head "
+             "distance when they disagree (the higher end is the root)...",
+             ParamRange::closed(0, 1));
+  params.add("height_min_head_distance_h", p.height_min_head_distance_h,
+             "...for regions whose rail ends all lie at least this far from the head, in H",
+             ParamRange::at_least(0));
+  params.add("continuation_radius_h", p.continuation_radius_h,
+             "distance, in H, within which another patch's strand continues a rail",
+             ParamRange::above(0));
+  params.add("uv_min_growth", p.uv_min_growth,
+             "growth of texture v along the rails for the texture to decide",
+             ParamRange::closed(0, 1));
+  params.add("convention_min_agreement", p.convention_min_agreement,
+             "share of a mesh's clear patches that must agree on a texture convention",
+             ParamRange::closed(0.5, 1));
+  params.add("parting_min_side_share", p.parting_min_side_share,
+             "a rail is parted at its top when each side is at least this share of it...",
+             ParamRange::closed(0, 0.5));
+  params.add("parting_min_side_drop", p.parting_min_side_drop,
+             "...each side drops by this share of its length...", ParamRange::closed(0, 1));
+  params.add("parting_min_end_distance_h", p.parting_min_end_distance_h,
+             "...and both ends hang off the head by this distance, in H", ParamRange::at_least(0));
+  params.add("scalp_distance_h", p.scalp_distance_h,
+             "body triangles above the neck within this distance of the hair mesh, in H, "
+             "form the scalp",
+             ParamRange::above(0));
+}
+
+}  // namespace hair

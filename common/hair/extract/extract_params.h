@@ -1,0 +1,24 @@
+#pragma once
+
+#include <string>
+
+#include "hair/core/params.h"
+#include "hair/extract/extract.h"
+#include "hair/mesh/mesh_io.h"
+
+namespace hair {
+
+/// The extract stage's settings: the algorithm's and how meshes are read.
+struct ExtractStageParams {
+  ExtractParams extract;
+  std::string mesh_reader = "auto";  ///< "auto" or "assimp"; see MeshReader
+
+  MeshReader reader() const {
+    return mesh_reader == "assimp" ? MeshReader::assimp : MeshReader::automatic;
+  }
+};
+
+/// Registers every extract parameter with its description and range.
+void declare_extract_params(ParamSet& params, ExtractStageParams& values);
+
+}  // namespace hair

@@ -1,0 +1,164 @@
+#include "hair/geom/triangle_mesh_distance.h"
+
+#include <algorithm>
+#include <limits>
+#include <nanoflann.hpp>
+
+namespace hair {
+
+struct TriangleMeshDistance::Index {
+  /// nanoflann dataset adaptor over the triangle centroids.
+  struct Centroids {
+    std::vector<Eigen::Vector3d> points;
+    size_t kdtree_get_point_count() const { return points.size(); }
+    double kdtree_get_pt(size_t i, size_t dim) const { return points[i][static_cast<int>(dim)]; }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const {
+      return false;
+    }
+  };
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Centroids>,
+                                                   Centroids, 3>;
+
+  std::vector<std::array<Eigen::Vector3d, 3>> corners;  ///< per indexed piece
+  std::vector<int32_t> source_triangle;                 ///< per indexed piece
+  Centroids centroids;
+  std::unique_ptr<Tree> tree;
+  size_t candidate_count = 4;
+  double largest_radius = 0;  ///< largest centroid-to-corner distance of a triangle
+};
+
+namespace {
+
+double piece_radius(const std::array<Eigen::Vector3d, 3>& c) {
+  Eigen::Vector3d centroid = (c[0] + c[1] + c[2]) / 3.0;
+  return std::max({(c[0] - centroid).norm(), (c[1] - centroid).norm(), (c[2] - centroid).norm()});
+}
+
+}  // namespace
+
+TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles,
+                                           int candidate_count)
+    : index_(std::make_unique<Index>()) {
+  std::vector<std::array<Eigen::Vector3d, 3>> all(static_cast<size_t>(triangles.rows()));
+  std::vector<double> radii(all.size());
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
+    for (int k = 0; k < 3; ++k)
+      all[t][k] = vertices.row(triangles(t, k)).cast<double>().transpose();
+    radii[t] = piece_radius(all[t]);
+  }
+  // Triangles much larger than the typical one are indexed as pieces (split at their
+  // edge midpoints), so that the search bound below stays small; each piece answers
+  // for its own triangle, so distances stay exact.
+  std::vector<double> sorted = radii;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
+                   sorted.end());
+  double target_radius = sorted.empty() ? 0.0 : 2.0 * std::max(sorted[sorted.size() / 2], 1e-12);
+  std::vector<std::pair<std::array<Eigen::Vector3d, 3>, int32_t>> stack;
+  for (size_t t = 0; t < all.size(); ++t) {
+    stack.push_back({all[t], static_cast<int32_t>(t)});
+    while (!stack.empty()) {
+      auto [c, id] = stack.back();
+      stack.pop_back();
+      if (piece_radius(c) > target_radius) {
+        Eigen::Vector3d ab = (c[0] + c[1]) / 2, bc = (c[1] + c[2]) / 2, ca = (c[2] + c[0]) / 2;
+        stack.push_back({{c[0], ab, ca}, id});
+        stack.push_back({{ab, c[1], bc}, id});
+        stack.push_back({{ca, bc, c[2]}, id});
+        stack.push_back({{ab, bc, ca}, id});
+        continue;
+      }
+      index_->largest_radius = std::max(index_->largest_radius, piece_radius(c));
+      index_->corners.push_back(c);
+      index_->source_triangle.push_back(id);
+      index_->centroids.points.push_back((c[0] + c[1] + c[2]) / 3.0);
+    }
+  }
+  index_->candidate_count =
+      std::min<size_t>(static_cast<size_t>(std::max(1, candidate_count)), index_->corners.size());
+  index_->tree = std::make_unique<Index::Tree>(3, index_->centroids,
+                                               nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  index_->tree->buildIndex();
+}
+
+TriangleMeshDistance::~TriangleMeshDistance() = default;
+TriangleMeshDistance::TriangleMeshDistance(TriangleMeshDistance&&) noexcept = default;
+TriangleMeshDistance& TriangleMeshDistance::operator=(TriangleMeshDistance&&) noexcept = default;
+
+TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3d& point) const {
+  Nearest best;
+  best.distance = std::numeric_limits<double>::infinity();
+  auto consider = [&](uint32_t piece) {
+    const auto& c = index_->corners[piece];
+    Eigen::Vector3d closest = closest_point_on_triangle(point, c[0], c[1], c[2]);
+    double distance = (closest - point).norm();
+    int32_t id = index_->source_triangle[piece];
+    if (distance < best.distance || (distance == best.distance && id < best.triangle))
+      best = {distance, id, closest};
+  };
+  size_t count = index_->candidate_count;
+  std::vector<uint32_t> ids(count);
+  std::vector<double> squared(count);
+  count = index_->tree->knnSearch(point.data(), count, ids.data(), squared.data());
+  for (size_t i = 0; i < count; ++i) consider(ids[i]);
+  // No triangle nearer than `best` has its centroid farther than this.
+  double bound = best.distance + index_->largest_radius;
+  std::vector<std::pair<uint32_t, double>> within;
+  nanoflann::SearchParams params;
+  params.sorted = false;
+  index_->tree->radiusSearch(point.data(), bound * bound, within, params);
+  for (const auto& [piece, squared_distance] : within) consider(piece);
+  return best;
+}
+
+bool TriangleMeshDistance::is_within(const Eigen::Vector3d& point, double radius) const {
+  double bound = radius + index_->largest_radius;
+  std::vector<std::pair<uint32_t, double>> within;
+  nanoflann::SearchParams params;
+  params.sorted = true;  // nearest centroids first: the likeliest to be within
+  index_->tree->radiusSearch(point.data(), bound * bound, within, params);
+  for (const auto& [piece, squared_distance] : within) {
+    const auto& c = index_->corners[piece];
+    if ((closest_point_on_triangle(point, c[0], c[1], c[2]) - point).norm() <= radius) return true;
+  }
+  return false;
+}
+
+Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                          const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  Eigen::Vector3d bp = p - b;
+  double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  Eigen::Vector3d cp = p - c;
+  double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  double denominator = va + vb + vc;
+  if (denominator <= 0) return a;  // degenerate triangle
+  double v = vb / denominator, w = vc / denominator;
+  return a + ab * v + ac * w;
+}
+
+Triangles3i fan_triangulation(const std::vector<int64_t>& face_offsets,
+                              const std::vector<int32_t>& face_vertices) {
+  int64_t triangle_count = 0;
+  for (size_t f = 0; f + 1 < face_offsets.size(); ++f)
+    triangle_count += std::max<int64_t>(0, face_offsets[f + 1] - face_offsets[f] - 2);
+  Triangles3i triangles(triangle_count, 3);
+  Eigen::Index t = 0;
+  for (size_t f = 0; f + 1 < face_offsets.size(); ++f)
+    for (int64_t c = face_offsets[f] + 1; c + 1 < face_offsets[f + 1]; ++c)
+      triangles.row(t++) << face_vertices[face_offsets[f]], face_vertices[c], face_vertices[c + 1];
+  return triangles;
+}
+
+}  // namespace hair

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <cstdint>
+
+#include "hair/core/strand_set.h"
+#include "hair/geom/triangle_mesh_distance.h"
+
+namespace hair {
+
+/// How well grown strands reproduce the hair mesh they were grown from (issue 5's
+/// measures); distances in head heights H.
+struct GrowMeasures {
+  int64_t mesh_samples = 0;   ///< points sampled on the hair mesh, uniformly by area
+  int64_t strand_points = 0;  ///< grown points measured
+  /// Coverage: from each mesh sample to the nearest grown strand segment.
+  double coverage_mean_h = 0, coverage_p95_h = 0;
+  /// Fidelity: from each grown point (roots excluded) to the hair mesh.
+  double fidelity_mean_h = 0, fidelity_p95_h = 0;
+  /// Share of grown points inside the body (the exact distance to the body's surface
+  /// signed by the nearest triangle's side).
+  double inside_body_share = 0;
+  /// Largest and mean distance of a root from the scalp triangles.
+  double root_distance_max_h = 0, root_distance_mean_h = 0;
+};
+
+/// Measures `grown` against the hair mesh (triangles) and the body with its scalp flags.
+/// Deterministic: the mesh samples come from a fixed seed.
+GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_vertices,
+                                   const Triangles3i& hair_triangles, const Points3f& body_vertices,
+                                   const Triangles3i& body_triangles,
+                                   const std::vector<uint8_t>& scalp_triangle, double head_height_m,
+                                   int64_t mesh_sample_count = 20000);
+
+}  // namespace hair

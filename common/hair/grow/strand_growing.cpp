@@ -1,0 +1,630 @@
+#include "hair/grow/strand_growing.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <optional>
+
+#include "hair/core/error.h"
+#include "hair/geom/body_sdf.h"
+#include "hair/geom/point_index.h"
+#include "hair/geom/triangle_mesh_distance.h"
+#include "hair/grow/orientation_field.h"
+#include "hair/grow/surface_sampling.h"
+
+namespace hair {
+
+const char* grow_rule_name(GrowRule rule) {
+  switch (rule) {
+    case GrowRule::root:
+      return "root";
+    case GrowRule::field:
+      return "field";
+    case GrowRule::input_strand:
+      return "input_strand";
+    case GrowRule::bridge:
+      return "bridge";
+  }
+  return "?";
+}
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+bool is_root_type(GroupType type) {
+  return type == GroupType::root_free || type == GroupType::root_connected;
+}
+
+/// A place where a strand can be entered at the end of another: the first point of an
+/// input strand (followed root to tip) or its last (followed backwards, for pieces that
+/// extract read tip to root).
+struct StrandEntry {
+  int32_t strand = -1;
+  bool backward = false;
+};
+
+/// Everything the growing of one strand looks up, built once.
+class GrowingContext {
+ public:
+  GrowingContext(const GrowInput& input, const GrowParams& params)
+      : input_(input), params_(params), h_(input.head_height_m) {
+    const StrandSet& strands = input.input_strands;
+    const auto& group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
+    strand_group_ = group;
+    int64_t strand_count = strands.strand_count();
+    group_strands_.resize(input.group_type.size());
+    for (int64_t s = 0; s < strand_count; ++s)
+      group_strands_[static_cast<size_t>(group[static_cast<size_t>(s)])].push_back(
+          static_cast<int32_t>(s));
+
+    // Points of the strands that carry roots, for the roots' clusters and reference
+    // lengths: root-type strands of clusters that start at the root; else any root-type
+    // strand; else any strand.
+    std::vector<int64_t> rows;
+    for (int64_t s = 0; s < strand_count; ++s)
+      if (carries_roots(s))
+        for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
+          rows.push_back(row);
+    if (rows.empty()) {
+      for (int64_t s = 0; s < strand_count; ++s)
+        if (is_root_type(type_of_strand(s)))
+          for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
+            rows.push_back(row);
+    }
+    if (rows.empty()) {
+      any_type_roots_ = true;
+      for (int64_t row = 0; row < strands.point_count(); ++row) rows.push_back(row);
+    }
+    root_point_rows_ = rows;
+    Points3f root_points(static_cast<Eigen::Index>(rows.size()), 3);
+    for (size_t i = 0; i < rows.size(); ++i)
+      root_points.row(static_cast<Eigen::Index>(i)) = strands.points.row(rows[i]);
+    root_index_ = std::make_unique<PointIndex>(root_points);
+    point_strand_.resize(static_cast<size_t>(strands.point_count()));
+    for (int64_t s = 0; s < strand_count; ++s)
+      for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
+        point_strand_[static_cast<size_t>(row)] = static_cast<int32_t>(s);
+
+    // Per group, an index of its points for follow().
+    group_index_.resize(group_strands_.size());
+    group_rows_.resize(group_strands_.size());
+    group_reach_m_.assign(group_strands_.size(), 0.0);
+    for (size_t g = 0; g < group_strands_.size(); ++g) {
+      double longest_m = 0;
+      for (int32_t s : group_strands_[g])
+        for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row) {
+          group_rows_[g].push_back(row);
+          if (row + 1 < strands.offsets[s + 1])
+            longest_m = std::max(
+                longest_m,
+                (point_of(strands.points, row + 1) - point_of(strands.points, row)).norm());
+        }
+      Points3f points(static_cast<Eigen::Index>(group_rows_[g].size()), 3);
+      for (size_t i = 0; i < group_rows_[g].size(); ++i)
+        points.row(static_cast<Eigen::Index>(i)) = strands.points.row(group_rows_[g][i]);
+      group_index_[g] = std::make_unique<PointIndex>(points);
+      // A little beyond follow_radius_h + half the longest segment, for float rounding.
+      group_reach_m_[g] = 1.01 * (params.follow_radius_h * h_ + 0.5 * longest_m) + 1e-6;
+    }
+
+    // Entries: both ends of every input strand.
+    Points3f entry_points(2 * strand_count, 3);
+    for (int64_t s = 0; s < strand_count; ++s) {
+      entry_points.row(2 * s) = strands.points.row(strands.offsets[s]);
+      entry_points.row(2 * s + 1) = strands.points.row(strands.offsets[s + 1] - 1);
+      entries_.push_back({static_cast<int32_t>(s), false});
+      entries_.push_back({static_cast<int32_t>(s), true});
+    }
+    entry_index_ = std::make_unique<PointIndex>(entry_points);
+
+    // Heights above the body, for layers.
+    if (params.layer_radius_h > 0) {
+      body_distance_ =
+          std::make_unique<TriangleMeshDistance>(input.body_vertices, input.body_triangles);
+      height_m_.resize(static_cast<size_t>(strands.point_count()));
+      for (int64_t row = 0; row < strands.point_count(); ++row)
+        height_m_[static_cast<size_t>(row)] =
+            body_distance_->distance(point_of(strands.points, row));
+    }
+
+    // Arc length from each point to its strand's tip.
+    length_to_tip_m_.assign(static_cast<size_t>(strands.point_count()), 0.0);
+    for (int64_t s = 0; s < strand_count; ++s)
+      for (int64_t row = strands.offsets[s + 1] - 2; row >= strands.offsets[s]; --row)
+        length_to_tip_m_[static_cast<size_t>(row)] =
+            length_to_tip_m_[static_cast<size_t>(row + 1)] +
+            (point_of(strands.points, row + 1) - point_of(strands.points, row)).norm();
+  }
+
+  GroupType type_of_strand(int64_t s) const {
+    return input_.group_type[static_cast<size_t>(strand_group_[static_cast<size_t>(s)])];
+  }
+  int32_t cluster_of_strand(int64_t s) const {
+    return input_.group_cluster[static_cast<size_t>(strand_group_[static_cast<size_t>(s)])];
+  }
+  int32_t group_of_strand(int64_t s) const { return strand_group_[static_cast<size_t>(s)]; }
+  bool cluster_starts_at_root(int32_t cluster) const {
+    const auto& starts = input_.cluster_starts_at_root;
+    return starts.empty() || starts.at(static_cast<size_t>(cluster)) != 0;
+  }
+  /// A root-type strand of a cluster that starts at the root: roots grow near it.
+  bool carries_roots(int64_t s) const {
+    return is_root_type(type_of_strand(s)) && cluster_starts_at_root(cluster_of_strand(s));
+  }
+  /// A root-type strand of a cluster that does not start at the root: it continues
+  /// another group (cluster-all's split_continued_roots).
+  bool continues_another(int64_t s) const {
+    return is_root_type(type_of_strand(s)) && !cluster_starts_at_root(cluster_of_strand(s));
+  }
+  bool any_type_roots() const { return any_type_roots_; }
+
+  /// The input-strand point nearest `point` among the root-type strands (all strands
+  /// when there are none): its row in input_strands.points.
+  int64_t nearest_root_point(const Vec3& point) const {
+    return root_point_rows_[static_cast<size_t>(
+        root_index_->nearest(point.cast<float>(), 1).front())];
+  }
+  int32_t strand_of_point(int64_t row) const { return point_strand_[static_cast<size_t>(row)]; }
+
+  bool layered() const { return body_distance_ != nullptr; }
+  const TriangleMeshDistance& body_distance() const { return *body_distance_; }
+  /// Height above the body of the input strand through `row`, `length_m` further along it
+  /// towards its tip (its tip's height beyond it); `cursor` (a row of the same strand, at
+  /// or after `row`) makes a walk along the strand linear.
+  double height_along(int64_t row, double length_m, int64_t& cursor) const {
+    const StrandSet& strands = input_.input_strands;
+    int64_t last = strands.offsets[strand_of_point(row) + 1] - 1;
+    double remaining_m = length_to_tip_m(row) - length_m;
+    cursor = std::max(cursor, row);
+    while (cursor < last && length_to_tip_m(cursor + 1) >= remaining_m) ++cursor;
+    if (cursor == last) return height_m_[static_cast<size_t>(last)];
+    double a = length_to_tip_m(cursor), b = length_to_tip_m(cursor + 1);
+    double t = a > b ? std::clamp((a - remaining_m) / (a - b), 0.0, 1.0) : 0.0;
+    return (1 - t) * height_m_[static_cast<size_t>(cursor)] +
+           t * height_m_[static_cast<size_t>(cursor + 1)];
+  }
+
+  /// The reference point of the root `root_id` at `root`: the nearest point of a
+  /// root-carrying strand, or with layers, that strand's point nearest the root on a strand
+  /// drawn by hash among those of the nearest one's cluster within layer_radius_h.
+  int64_t reference_row(const Vec3& root, int64_t root_id) const {
+    int64_t nearest = nearest_root_point(root);
+    if (!layered() || any_type_roots_) return nearest;
+    int32_t cluster = cluster_of_strand(strand_of_point(nearest));
+    // Per candidate strand, its nearest point: the ids come nearest first, so after a
+    // stable sort by strand the first of each strand.
+    std::vector<std::pair<int32_t, int64_t>> candidates;
+    for (int32_t id :
+         root_index_->within(root.cast<float>(), static_cast<float>(params_.layer_radius_h * h_))) {
+      int64_t row = root_point_rows_[static_cast<size_t>(id)];
+      int32_t s = strand_of_point(row);
+      if (cluster_of_strand(s) == cluster) candidates.emplace_back(s, row);
+    }
+    if (candidates.empty()) return nearest;
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    candidates.erase(std::unique(candidates.begin(), candidates.end(),
+                                 [](const auto& a, const auto& b) { return a.first == b.first; }),
+                     candidates.end());
+    // SplitMix64 of the root's id and the seed: the same draw whatever the thread count.
+    uint64_t z = static_cast<uint64_t>(root_id) * 0x9E3779B97F4A7C15ull +
+                 static_cast<uint64_t>(params_.seed) + 0x632BE59BD9B4E019ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return candidates[static_cast<size_t>(z % candidates.size())].second;
+  }
+  double length_to_tip_m(int64_t row) const { return length_to_tip_m_[static_cast<size_t>(row)]; }
+
+  /// Closest point of the rails of `group` to `point`: the tangent there (along the
+  /// reading direction) and whether the point lies past the end being read towards.
+  struct Following {
+    Vec3 direction;
+    bool past_end = false;
+    double distance_m = 0;        ///< from the rail
+    Vec3 closest = Vec3::Zero();  ///< the rail's point nearest
+  };
+  /// Only rails within follow_radius_h are looked at: farther, the point is lost anyway
+  /// (distance_m is then infinite).
+  Following follow(int32_t group, bool backward, const Vec3& point) const {
+    const StrandSet& strands = input_.input_strands;
+    double best = std::numeric_limits<double>::infinity();
+    Following result{Vec3::UnitY() * -1.0, true, best};
+    const auto g = static_cast<size_t>(group);
+    // A segment with a point within follow_radius_h has an end within that plus half its
+    // length: the segments at the group's points within reach_m are all there can be.
+    std::vector<int64_t> segments;  // first rows
+    for (int32_t id :
+         group_index_[g]->within(point.cast<float>(), static_cast<float>(group_reach_m_[g]))) {
+      int64_t row = group_rows_[g][static_cast<size_t>(id)];
+      int32_t s = strand_of_point(row);
+      if (row > strands.offsets[s]) segments.push_back(row - 1);
+      if (row + 1 < strands.offsets[s + 1]) segments.push_back(row);
+    }
+    std::sort(segments.begin(), segments.end());
+    segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+    for (int64_t row : segments) {
+      int32_t s = strand_of_point(row);
+      int64_t first = strands.offsets[s], last = strands.offsets[s + 1] - 1;
+      Vec3 a = point_of(strands.points, row), b = point_of(strands.points, row + 1);
+      Vec3 ab = b - a;
+      double length2 = ab.squaredNorm();
+      if (length2 <= 0) continue;
+      double t = std::clamp((point - a).dot(ab) / length2, 0.0, 1.0);
+      double distance2 = (a + t * ab - point).squaredNorm();
+      if (distance2 >= best) continue;
+      best = distance2;
+      Vec3 direction = ab.normalized() * (backward ? -1.0 : 1.0);
+      // Past the end: beyond the last segment's far end in the reading direction.
+      bool at_end = backward ? (row == first && t <= 0.0) : (row == last - 1 && t >= 1.0);
+      result = {direction, at_end && (point - (backward ? a : b)).dot(direction) >= 0,
+                std::sqrt(distance2), a + t * ab};
+    }
+    return result;
+  }
+
+  /// The best input strand to continue into from `point` going `direction`, among
+  /// strands of groups not yet visited and not of `excluded_cluster`: the nearest entry
+  /// (weighted by how much it turns), from `preferred_cluster` if any qualifies.
+  std::optional<StrandEntry> next_entry(const Vec3& point, const Vec3& direction,
+                                        const std::vector<int32_t>& visited_groups,
+                                        int32_t preferred_cluster, int32_t excluded_cluster) const {
+    const StrandSet& strands = input_.input_strands;
+    double radius_m = params_.continue_radius_h * h_;
+    double search_m = std::max(radius_m, params_.continued_root_radius_h * h_);
+    double min_cos = std::cos(params_.continue_max_angle_deg * std::numbers::pi / 180);
+    std::optional<StrandEntry> best_same, best_other;
+    double score_same = std::numeric_limits<double>::infinity(), score_other = score_same;
+    for (int32_t e : entry_index_->within(point.cast<float>(), static_cast<float>(search_m))) {
+      const StrandEntry& entry = entries_[static_cast<size_t>(e)];
+      // Beyond continue_radius_h only the start of a group that continues another.
+      double reach_m = !entry.backward && continues_another(entry.strand) ? search_m : radius_m;
+      if ((point_of(strands.points, entry.backward ? strands.offsets[entry.strand + 1] - 1
+                                                   : strands.offsets[entry.strand]) -
+           point)
+              .norm() > reach_m)
+        continue;
+      int32_t group = group_of_strand(entry.strand);
+      int32_t cluster = cluster_of_strand(entry.strand);
+      if (cluster == excluded_cluster) continue;
+      if (std::find(visited_groups.begin(), visited_groups.end(), group) != visited_groups.end())
+        continue;
+      int64_t first = strands.offsets[entry.strand], last = strands.offsets[entry.strand + 1] - 1;
+      if (last - first < 1) continue;
+      Vec3 start =
+          entry.backward ? point_of(strands.points, last) : point_of(strands.points, first);
+      Vec3 next =
+          entry.backward ? point_of(strands.points, last - 1) : point_of(strands.points, first + 1);
+      Vec3 leaving = (next - start).normalized();
+      double turn_cos = leaving.dot(direction);
+      if (turn_cos < min_cos) continue;
+      // Not behind us by more than the radius allows, and not across the gap sideways.
+      Vec3 gap = start - point;
+      double score = gap.norm() / reach_m + (1 - turn_cos);
+      bool same = cluster == preferred_cluster;
+      double& best_score = same ? score_same : score_other;
+      auto& best_entry = same ? best_same : best_other;
+      if (score < best_score) {
+        best_score = score;
+        best_entry = entry;
+      }
+    }
+    return best_same ? best_same : best_other;
+  }
+
+  const GrowInput& input() const { return input_; }
+  const GrowParams& params() const { return params_; }
+
+ private:
+  const GrowInput& input_;
+  const GrowParams& params_;
+  double h_;
+  std::vector<int32_t> strand_group_;
+  std::vector<std::vector<int32_t>> group_strands_;
+  std::vector<std::unique_ptr<PointIndex>> group_index_;  ///< per group, over group_rows_
+  std::vector<std::vector<int64_t>> group_rows_;          ///< per group, its points' rows
+  std::vector<double> group_reach_m_;                     ///< per group, for follow()
+  std::vector<int64_t> root_point_rows_;
+  std::unique_ptr<PointIndex> root_index_;
+  std::vector<int32_t> point_strand_;
+  std::vector<StrandEntry> entries_;
+  std::unique_ptr<PointIndex> entry_index_;
+  std::vector<double> length_to_tip_m_;
+  std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
+  std::vector<double> height_m_;                         ///< per input point, with layers
+  bool any_type_roots_ = false;
+};
+
+/// Steps between two pulls of a strand towards its layer's height.
+constexpr int kLayerEvery = 3;
+
+/// One strand being grown: its points and the rule of each.
+struct GrowingStrand {
+  std::vector<Vec3> points;
+  std::vector<GrowRule> rules;
+  std::vector<int32_t> clusters, groups;  ///< per point, as GrowResult::point_cluster, _group
+  int64_t pushed_out = 0;
+  int64_t continued_same = 0, continued_other = 0;
+};
+
+/// Grows one strand from `root`. `field` is its cluster's orientation field (null when the
+/// cluster has none); `reference_row` the input-strand point nearest the root.
+GrowingStrand grow_one(const GrowingContext& context, const OrientationField* field,
+                       const BodySdf& body, const Vec3& root, int32_t root_cluster,
+                       int64_t reference_row) {
+  const GrowParams& params = context.params();
+  double h = context.input().head_height_m;
+  double step_m = params.step_h * h, clearance_m = params.body_clearance_h * h;
+  double lost_m = params.follow_radius_h * h, keep_m = params.follow_keep_h * h;
+  GrowingStrand strand;
+  auto add_point = [&](Vec3 point, GrowRule rule, int32_t cluster, int32_t group) {
+    if (rule != GrowRule::root && body.push_out(point, clearance_m)) ++strand.pushed_out;
+    strand.points.push_back(point);
+    strand.rules.push_back(rule);
+    strand.clusters.push_back(cluster);
+    strand.groups.push_back(group);
+  };
+  add_point(root, GrowRule::root, root_cluster, -1);
+  auto full = [&] {
+    return static_cast<int64_t>(strand.points.size()) >= params.max_points_per_strand;
+  };
+  Vec3 direction = Vec3::Zero();
+
+  // 1. Along the cluster's field.
+  bool left_field_early = false;
+  if (field && field->direction(root)) {
+    double length_limit_m = params.length_factor * context.length_to_tip_m(reference_row);
+    double length_m = 0;
+    Vec3 point = root;
+    int64_t cursor = reference_row;
+    int steps_since_layer = 0;
+    left_field_early = true;
+    while (!full()) {
+      if (length_m + step_m > length_limit_m) {
+        left_field_early = false;
+        break;
+      }
+      std::optional<Vec3> d1 = field->direction(point);
+      if (!d1) break;
+      std::optional<Vec3> d2 = field->direction(point + 0.5 * step_m * *d1);
+      if (!d2) break;
+      Vec3 next = point + step_m * *d2;
+      if (context.layered() && ++steps_since_layer == kLayerEvery) {
+        // Towards the reference strand's height above the body, every kLayerEvery steps
+        // by at most layer_pull of those steps: the height and its direction from the
+        // body's signed distance field inside its band, from the exact distance beyond
+        // it (the costlier query: a third of grow's time on long01 when made every step).
+        double height_m = body.distance(next);
+        Vec3 up = Vec3::Zero();
+        if (height_m < body.band_m() - 1.5 * body.voxel_m()) {
+          up = body.gradient(next);
+        } else {
+          TriangleMeshDistance::Nearest body_point = context.body_distance().nearest(next);
+          height_m = body_point.distance;
+          if (height_m > 0) up = (next - body_point.closest_point) / height_m;
+        }
+        if (up.squaredNorm() > 0) {
+          double target_m = context.height_along(reference_row, length_m + step_m, cursor);
+          double pull_m = params.layer_pull * step_m * kLayerEvery;
+          next += up.normalized() * std::clamp(target_m - height_m, -pull_m, pull_m);
+        }
+        steps_since_layer = 0;
+      }
+      if (!field->contains(next)) break;
+      add_point(next, GrowRule::field, root_cluster, -1);
+      direction = *d2;
+      length_m += step_m;
+      point = strand.points.back();
+    }
+  }
+
+  // 2. Along input strands, group after group.
+  std::vector<int32_t> visited;
+  int32_t group = -1, cluster = root_cluster;
+  bool backward = false;
+  if (strand.points.size() == 1) {
+    // No field here (a root cluster without one, or a root outside its band): start on
+    // the input strand nearest the root.
+    int32_t s = context.strand_of_point(context.nearest_root_point(root));
+    group = context.group_of_strand(s);
+    cluster = context.cluster_of_strand(s);
+    visited.push_back(group);
+  } else if (left_field_early) {
+    // The field ended before the strand grew as long as its input strands (the edge of
+    // the band, beside a card): go on along the closest input strand of the cluster.
+    int64_t row = context.nearest_root_point(strand.points.back());
+    int32_t s = context.strand_of_point(row);
+    double min_cos = std::cos(params.continue_max_angle_deg * std::numbers::pi / 180);
+    if (context.cluster_of_strand(s) == root_cluster &&
+        (point_of(context.input().input_strands.points, row) - strand.points.back()).norm() <=
+            lost_m &&
+        context.follow(context.group_of_strand(s), false, strand.points.back())
+                .direction.dot(direction) >= min_cos) {
+      group = context.group_of_strand(s);
+      visited.push_back(group);
+    }
+  }
+  double max_length_m = params.max_length_h * h;
+  auto too_long = [&] {
+    return static_cast<double>(strand.points.size() - 1) * step_m > max_length_m;
+  };
+  while (!full() && !too_long()) {
+    Vec3 point = strand.points.back();
+    if (group >= 0) {
+      GrowingContext::Following following = context.follow(group, backward, point);
+      // Lost (drifted off the strand's group), or turned back: the end of this group.
+      bool turned_back = direction.squaredNorm() > 0 && following.direction.dot(direction) < 0;
+      if (!following.past_end && following.distance_m <= lost_m && !turned_back) {
+        direction = following.direction;
+        Vec3 next = point + step_m * direction;
+        double excess_m = following.distance_m - keep_m;
+        if (excess_m > 0 && params.follow_pull > 0) {
+          Vec3 towards = following.closest - point;
+          towards -= towards.dot(direction) * direction;
+          if (towards.squaredNorm() > 0)
+            next += towards.normalized() * std::min(excess_m, params.follow_pull * step_m);
+        }
+        add_point(next, GrowRule::input_strand, cluster, group);
+        continue;
+      }
+    }
+    if (direction.squaredNorm() == 0) break;
+    // At the end of the field or of an input strand: the next strand, bridged to.
+    std::optional<StrandEntry> entry =
+        context.next_entry(point, direction, visited, cluster, group < 0 ? root_cluster : -1);
+    if (!entry) break;
+    int32_t next_cluster = context.cluster_of_strand(entry->strand);
+    (next_cluster == cluster ? strand.continued_same : strand.continued_other) += 1;
+    group = context.group_of_strand(entry->strand);
+    cluster = next_cluster;
+    backward = entry->backward;
+    visited.push_back(group);
+    const StrandSet& strands = context.input().input_strands;
+    Vec3 start = point_of(strands.points, backward ? strands.offsets[entry->strand + 1] - 1
+                                                   : strands.offsets[entry->strand]);
+    // Straight to its start; a step that gets no nearer (the start lies in the body, and
+    // each step is pushed back out) ends the bridge where it is.
+    for (double gap_m = (start - strand.points.back()).norm(); gap_m > step_m && !full();) {
+      Vec3 towards = (start - strand.points.back()).normalized();
+      add_point(strand.points.back() + step_m * towards, GrowRule::bridge, cluster, group);
+      double next_gap_m = (start - strand.points.back()).norm();
+      if (next_gap_m > gap_m - 0.25 * step_m) break;
+      gap_m = next_gap_m;
+    }
+  }
+  return strand;
+}
+
+}  // namespace
+
+GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
+  const double h = input.head_height_m;
+  if (!(h > 0)) throw Error::bad_input(input.source, "head height is not positive");
+  if (input.input_strands.strand_count() == 0)
+    throw Error::bad_input(input.source, "no input strands to grow from");
+  if (input.scalp_triangle.size() != static_cast<size_t>(input.body_triangles.rows()))
+    throw Error::bad_input(input.source, "scalp flags do not match the body's triangles");
+  GrowingContext context(input, params);
+  GrowResult result;
+  result.roots_from_any_type = context.any_type_roots();
+  if (result.roots_from_any_type)
+    spdlog::warn("{}: no root-type strand group; roots take the cluster of the nearest strand",
+                 input.source);
+
+  // Roots: blue noise on the scalp covered by root-type strands.
+  const StrandSet& strands = input.input_strands;
+  std::vector<uint8_t> covered(input.scalp_triangle.size(), 0);
+  auto cover_m = static_cast<float>(params.scalp_cover_h * h);
+  for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
+    if (!input.scalp_triangle[static_cast<size_t>(t)]) continue;
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) centre += point_of(input.body_vertices, input.body_triangles(t, k));
+    centre /= 3;
+    int64_t row = context.nearest_root_point(centre);
+    if ((point_of(strands.points, row) - centre).norm() <= cover_m) {
+      covered[static_cast<size_t>(t)] = 1;
+      ++result.scalp_triangles_used;
+    }
+  }
+  if (result.scalp_triangles_used == 0)
+    throw Error::bad_input(input.source,
+                           "no scalp triangle lies under a root-type input strand: nothing to "
+                           "grow from (is scalp_cover_h too small?)");
+  SurfaceSamples roots =
+      poisson_disk_samples(input.body_vertices, input.body_triangles, covered, params.strand_count,
+                           static_cast<uint64_t>(params.seed));
+  result.scalp_area_m2 = roots.area_m2;
+  result.root_spacing_m = roots.min_spacing_m;
+  auto root_count = static_cast<int64_t>(roots.positions.rows());
+  std::vector<int64_t> reference_row(static_cast<size_t>(root_count));
+  std::vector<int32_t> root_cluster(static_cast<size_t>(root_count));
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int64_t r = 0; r < root_count; ++r) {
+    reference_row[static_cast<size_t>(r)] = context.reference_row(point_of(roots.positions, r), r);
+    root_cluster[static_cast<size_t>(r)] =
+        context.cluster_of_strand(context.strand_of_point(reference_row[static_cast<size_t>(r)]));
+  }
+
+  // One field per cluster with roots, from its root-type strands.
+  int32_t cluster_count = 0;
+  for (int32_t c : input.group_cluster) cluster_count = std::max(cluster_count, c + 1);
+  result.clusters.resize(static_cast<size_t>(cluster_count));
+  for (int32_t c : root_cluster) ++result.clusters[static_cast<size_t>(c)].strand_count;
+  std::vector<std::optional<OrientationField>> fields(static_cast<size_t>(cluster_count));
+  OrientationFieldParams field_params{params.field_voxel_h * h, params.field_band_h * h};
+  for (int32_t c = 0; c < cluster_count; ++c) {
+    if (result.clusters[static_cast<size_t>(c)].strand_count == 0) continue;
+    std::vector<int64_t> ids;
+    for (int64_t s = 0; s < strands.strand_count(); ++s)
+      if (context.cluster_of_strand(s) == c && context.carries_roots(s)) ids.push_back(s);
+    if (ids.empty()) continue;
+    fields[static_cast<size_t>(c)] = OrientationField::build(strands, ids, field_params);
+    result.clusters[static_cast<size_t>(c)].field_voxel_count =
+        fields[static_cast<size_t>(c)]->band_voxel_count();
+    result.clusters[static_cast<size_t>(c)].field_seeded_voxels =
+        fields[static_cast<size_t>(c)]->seeded_voxel_count();
+  }
+
+  // The body, over the region the strands can reach.
+  double margin_m = (params.continue_radius_h + params.field_band_h + params.step_h) * h;
+  Vec3 low = strands.points.colwise().minCoeff().cast<double>().transpose().array() - margin_m;
+  Vec3 high = strands.points.colwise().maxCoeff().cast<double>().transpose().array() + margin_m;
+  Vec3 root_low = roots.positions.colwise().minCoeff().cast<double>().transpose();
+  Vec3 root_high = roots.positions.colwise().maxCoeff().cast<double>().transpose();
+  low = low.cwiseMin(root_low);
+  high = high.cwiseMax(root_high);
+  BodySdf body(input.body_vertices, input.body_triangles, low, high, params.body_voxel_h * h,
+               4 * params.body_voxel_h * h, input.source);
+
+  // Grow, each strand on its own.
+  std::vector<GrowingStrand> grown(static_cast<size_t>(root_count));
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int64_t r = 0; r < root_count; ++r) {
+    auto i = static_cast<size_t>(r);
+    const auto& field = fields[static_cast<size_t>(root_cluster[i])];
+    grown[i] = grow_one(context, field ? &*field : nullptr, body, point_of(roots.positions, r),
+                        root_cluster[i], reference_row[i]);
+  }
+
+  // Assemble; a strand that could not leave its root gets a second point one step out
+  // along the normal, so every strand is a polyline.
+  std::vector<Points3f> polylines;
+  polylines.reserve(grown.size());
+  std::vector<GrowRule>& rules = result.point_rule;
+  std::vector<int32_t> point_cluster, point_group;
+  for (size_t i = 0; i < grown.size(); ++i) {
+    GrowingStrand& strand = grown[i];
+    if (strand.points.size() < 2) {
+      Vec3 normal = roots.normals.row(static_cast<Eigen::Index>(i)).cast<double>().transpose();
+      strand.points.push_back(strand.points.front() + params.step_h * h * normal);
+      strand.rules.push_back(GrowRule::field);
+      strand.clusters.push_back(strand.clusters.front());
+      strand.groups.push_back(-1);
+    }
+    Points3f polyline(static_cast<Eigen::Index>(strand.points.size()), 3);
+    for (size_t k = 0; k < strand.points.size(); ++k)
+      polyline.row(static_cast<Eigen::Index>(k)) = strand.points[k].cast<float>().transpose();
+    polylines.push_back(std::move(polyline));
+    rules.insert(rules.end(), strand.rules.begin(), strand.rules.end());
+    point_cluster.insert(point_cluster.end(), strand.clusters.begin(), strand.clusters.end());
+    point_group.insert(point_group.end(), strand.groups.begin(), strand.groups.end());
+    result.points_pushed_out += strand.pushed_out;
+    result.continuations_same_cluster += strand.continued_same;
+    result.continuations_other_cluster += strand.continued_other;
+  }
+  result.strands = strand_set_from_polylines(polylines);
+  result.strands.strand_attributes["cluster"] = root_cluster;
+  result.strands.strand_attributes["root_triangle"] = roots.triangle;
+  result.strands.strand_attributes["root_normal"] = roots.normals;
+  result.strands.point_attributes["cluster"] = std::move(point_cluster);
+  result.strands.point_attributes["group"] = std::move(point_group);
+  check_strand_set(result.strands);
+  return result;
+}
+
+}  // namespace hair

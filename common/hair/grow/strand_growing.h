@@ -1,0 +1,129 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hair/cluster/typeify.h"
+#include "hair/core/strand_set.h"
+#include "hair/geom/triangle_mesh_distance.h"
+
+namespace hair {
+
+/// How a segment of a grown strand was grown (paper section 4.4).
+enum class GrowRule : int8_t {
+  root = 0,          ///< the root point itself, on the scalp
+  field = 1,         ///< along the orientation field of the root's cluster
+  input_strand = 2,  ///< along the closest input strand of a middle or tip group (or any
+                     ///< group, once the field is left)
+  bridge = 3,        ///< across a gap, straight to the start of the next input strand
+};
+const char* grow_rule_name(GrowRule rule);
+
+/// Parameters of grow_strands(); lengths are in head heights H unless they say _m.
+struct GrowParams {
+  int strand_count = 10000;  ///< roots sampled on the scalp
+  int seed = 1;              ///< of the root sampling
+  /// Scalp triangles (extract.h5 /body/scalp_triangle) whose centre lies within this
+  /// distance of a point of a root-type input strand carry roots.
+  double scalp_cover_h = 0.05;
+  double step_h = 0.02;         ///< growing step (RK2 along the field, or along a strand)
+  double field_voxel_h = 0.02;  ///< orientation-field grid spacing
+  double field_band_h = 0.06;   ///< the field reaches this far from its cluster's strands
+  /// The field phase ends once a strand is this many times as long as what remains of the
+  /// input strand nearest its root (from that strand's nearest point to its tip).
+  double length_factor = 1.0;
+  /// At the end of an input strand, the next one must begin (or end, read backwards)
+  /// within this distance...
+  double continue_radius_h = 0.08;
+  /// ...and leave within this angle of the current direction.
+  double continue_max_angle_deg = 60;
+  /// A root-type group that continues another (one whose cluster does not start at the
+  /// root: cluster-all's split_continued_roots) is entered from within this distance, the
+  /// reach of cluster-all's connections (f1_max): typeify typed it root because nothing
+  /// lay within its own reach before it, so the gap to it is wider than continue_radius_h.
+  double continued_root_radius_h = 0.25;
+  /// A strand following an input strand's group is lost (and looks for the next group)
+  /// farther than this from the group's rails.
+  double follow_radius_h = 0.08;
+  /// A strand following a group drifts back towards its nearest rail where it lies farther
+  /// than follow_keep_h from it, by at most follow_pull steps per step (0: it keeps the
+  /// offset it entered with).
+  double follow_keep_h = 0.02;
+  double follow_pull = 0.5;
+  /// Grown points are kept this far outside the body (its signed distance field).
+  double body_clearance_h = 0.004;
+  double body_voxel_h = 0.01;  ///< spacing of the body's signed distance field
+  /// Layers of hair (a bob's outer strips lie 0.05-0.15 H off the head, over inner ones):
+  /// a root's reference input strand (which gives its length limit, and the height its
+  /// strand keeps above the body along the field) is drawn, by a hash of the root, among
+  /// the strands of the root's cluster that carry roots and pass within this distance of
+  /// it. 0: the nearest strand, and strands follow the field at whatever height it takes
+  /// them.
+  double layer_radius_h = 0.1;
+  /// Along the field, each step moves a strand towards its reference strand's height above
+  /// the body (at the same arc length) by at most this share of a step.
+  double layer_pull = 0.5;
+  int max_points_per_strand = 2000;
+  /// No strand grows longer than this (a guard against strands that wander from group to
+  /// group; the longest MakeHuman hair, long01, is about 3.5 H).
+  double max_length_h = 6;
+};
+
+/// What grow_strands() reads of extract.h5, types.h5 and clusters.h5.
+struct GrowInput {
+  StrandSet input_strands;             ///< root first; strand_attributes "group"
+  std::vector<GroupType> group_type;   ///< per group
+  std::vector<int32_t> group_cluster;  ///< per group, final clusters
+  /// Per final cluster (clusters.h5 /clusters/starts_at_root): whether it starts at the
+  /// root. Empty: every cluster with a root-type group does.
+  std::vector<uint8_t> cluster_starts_at_root;
+  Points3f body_vertices;
+  Triangles3i body_triangles;
+  std::vector<uint8_t> scalp_triangle;  ///< per body triangle
+  double head_height_m = 0;
+  std::string source;  ///< names the input in errors
+};
+
+/// Per cluster of the input: what growing did with it.
+struct GrownCluster {
+  int64_t strand_count = 0;       ///< strands rooted in it
+  int64_t field_voxel_count = 0;  ///< 0: no field built (no roots, or no root-type strands)
+  int64_t field_seeded_voxels = 0;
+};
+
+struct GrowResult {
+  /// Grown strands, root first. strand_attributes: "cluster" (int32, the root's),
+  /// "root_triangle" (int32, body triangle), "root_normal" (#strands x 3).
+  /// point_attributes (int32): "cluster", the cluster each point belongs to: the root's
+  /// along the root and the field, then the cluster of the group followed or bridged to,
+  /// so that a strand can run through several clusters (a ponytail's cap, then its tail);
+  /// "group", the input group followed or bridged to, -1 at the root and along the field.
+  StrandSet strands;
+  /// Per point: how the segment ending there was grown (GrowRule::root at roots).
+  std::vector<GrowRule> point_rule;
+  std::vector<GrownCluster> clusters;  ///< per input cluster
+  int64_t scalp_triangles_used = 0;
+  double scalp_area_m2 = 0;
+  double root_spacing_m = 0;      ///< smallest distance between two roots
+  int64_t points_pushed_out = 0;  ///< grown points moved out of the body
+  int64_t continuations_same_cluster = 0;
+  int64_t continuations_other_cluster = 0;
+  bool roots_from_any_type = false;  ///< no root-type group: roots took any input strand
+};
+
+/// Grows strands from the scalp (paper section 4.4, Figure 7):
+///  1. roots: blue noise over the scalp triangles that root-type input strands of clusters
+///     that start at the root cover, each in the cluster of the nearest such strand (a
+///     root-type group that continues another, in a cluster that does not start at the
+///     root, carries no roots);
+///  2. one orientation field per cluster that has roots, from its root-type strands;
+///  3. each strand follows its cluster's field (RK2) until it leaves the field or has
+///     grown as long as the input strand nearest its root; then it follows the closest
+///     input strand of the group it reaches, and at that strand's end the next input
+///     strand that continues it (same cluster first, then the others), bridging gaps;
+///  4. no point enters the body: points are pushed out along the body's signed distance.
+/// Deterministic whatever the thread count.
+GrowResult grow_strands(const GrowInput& input, const GrowParams& params);
+
+}  // namespace hair

@@ -1,0 +1,543 @@
+#include "hair/interp/strand_interpolation.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "hair/core/error.h"
+#include "hair/geom/barycentric.h"
+#include "hair/geom/point_index.h"
+#include "hair/interp/interpolation_kernel.h"
+#include "hair/style/hair_style.h"
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Per guide particle in a frame's table: eight 4-float columns (interpolation_kernel.h's
+/// kParticleFloats: of the position and of each of the frame's three columns, P_j and
+/// then Q_j), so that a point is a few SIMD multiply-adds per guide.
+constexpr int kColumns = 8;
+static_assert(kColumns * 4 == kParticleFloats);
+using Column = Eigen::Array4f;
+
+void check_params(const InterpolationParams& p) {
+  if (p.candidate_guides < 3)
+    throw Error::usage("candidate_guides must be at least 3, not " +
+                       std::to_string(p.candidate_guides));
+  if (!(p.min_direction_cosine >= -1 && p.min_direction_cosine <= 1))
+    throw Error::usage("min_direction_cosine must be within [-1, 1], not " +
+                       std::to_string(p.min_direction_cosine));
+  if (!(p.min_triangle_aspect >= 0 && p.min_triangle_aspect <= 1))
+    throw Error::usage("min_triangle_aspect must be within [0, 1], not " +
+                       std::to_string(p.min_triangle_aspect));
+  if (!(p.min_guide_length_ratio >= 0 && p.min_guide_length_ratio <= 1))
+    throw Error::usage("min_guide_length_ratio must be within [0, 1], not " +
+                       std::to_string(p.min_guide_length_ratio));
+}
+
+/// Smallest height of triangle (a, b, c) over its longest edge.
+double triangle_aspect(const Vec3& a, const Vec3& b, const Vec3& c) {
+  double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+  if (!(longest > 0)) return 0;
+  double twice_area = (b - a).cross(c - a).norm();
+  return twice_area / longest / longest;
+}
+
+/// The guide's point at arc parameter u in [0, 1] at rest (guides are resampled to equal
+/// arcs, so the parameter is linear in the particle index).
+Vec3 guide_rest_point(const InterpolationGuides& guides, int32_t g, double u) {
+  int64_t first = guides.offsets[static_cast<size_t>(g)];
+  int64_t segments = guides.offsets[static_cast<size_t>(g) + 1] - first - 1;
+  double x = u * static_cast<double>(segments);
+  int64_t k = std::clamp<int64_t>(static_cast<int64_t>(std::floor(x)), 0, segments - 1);
+  double f = x - static_cast<double>(k);
+  Vec3 p0 = point_of(guides.rest_points, first + k);
+  Vec3 p1 = point_of(guides.rest_points, first + k + 1);
+  return p0 + f * (p1 - p0);
+}
+
+}  // namespace
+
+const char* interpolation_method_name(InterpolationMethod method) {
+  switch (method) {
+    case InterpolationMethod::fixed:
+      return "fixed";
+    case InterpolationMethod::barycentric:
+      return "barycentric";
+    case InterpolationMethod::clump:
+      return "clump";
+    case InterpolationMethod::braided:
+      return "braided";
+  }
+  return "unknown";
+}
+
+StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,
+                           const InterpolationParams& params) {
+  check_params(params);
+  const auto& point_cluster =
+      std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
+  const int64_t strand_count = strands.strand_count();
+  const int64_t point_count = strands.point_count();
+  StrandBinding binding;
+  binding.method.assign(static_cast<size_t>(strand_count), InterpolationMethod::fixed);
+  binding.guides.assign(static_cast<size_t>(strand_count), {-1, -1, -1});
+  binding.weights.assign(static_cast<size_t>(strand_count), {0.0f, 0.0f, 0.0f});
+  binding.held_count.assign(static_cast<size_t>(strand_count), 0);
+  binding.bound_from.assign(static_cast<size_t>(strand_count), 0);
+  binding.interpolated_from.assign(static_cast<size_t>(strand_count), 0);
+  binding.parameter.assign(static_cast<size_t>(point_count), 0.0f);
+  binding.offset_m = Points3f::Zero(point_count, 3);
+  binding.tetrahedron.assign(static_cast<size_t>(point_count), -1);
+  binding.guide_offsets = guides.offsets;
+  binding.guide_rest_points = guides.rest_points;
+  binding.tetrahedron_count = guides.wisp_tetrahedron_offsets.back();
+  binding.bridged.assign(static_cast<size_t>(strand_count), 0);
+  binding.wisp_rest_frames = guides.wisp_rest_frames;
+  if (static_cast<int64_t>(binding.wisp_rest_frames.size()) != 7 * binding.tetrahedron_count)
+    throw Error::runtime("guides", "the wisps' rest frames are not 7 values per tetrahedron");
+
+  // Guides that strands can follow: strand guides with at least two particles.
+  std::vector<int32_t> usable;
+  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g) {
+    if (guides.offsets[static_cast<size_t>(g) + 1] - guides.offsets[static_cast<size_t>(g)] < 2)
+      throw Error::runtime("guides", "guide " + std::to_string(g) + " has fewer than 2 particles");
+    if (!guides.is_wisp_centre[static_cast<size_t>(g)]) usable.push_back(g);
+  }
+  Points3f anchors(static_cast<Eigen::Index>(usable.size()), 3);
+  std::vector<Vec3> direction;
+  for (size_t i = 0; i < usable.size(); ++i) {
+    int32_t g = usable[i];
+    Vec3 first = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g)]);
+    Vec3 last = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g) + 1] - 1);
+    anchors.row(static_cast<Eigen::Index>(i)) = first.cast<float>().transpose();
+    direction.push_back((last - first).normalized());
+  }
+  PointIndex index(anchors);
+  // Each guide's rest length along its particles, from its anchor to its tip.
+  std::vector<double> guide_length_m(static_cast<size_t>(guides.guide_count()), 0.0);
+  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g)
+    for (int64_t k = guides.offsets[static_cast<size_t>(g)] + 1;
+         k < guides.offsets[static_cast<size_t>(g) + 1]; ++k)
+      guide_length_m[static_cast<size_t>(g)] +=
+          (point_of(guides.rest_points, k) - point_of(guides.rest_points, k - 1)).norm();
+
+  // Bound points: the wisps' bindings.
+  for (size_t b = 0; b < guides.binding_point.size(); ++b) {
+    int64_t row = guides.binding_point[b];
+    int32_t wisp = guides.binding_wisp[b];
+    if (row < 0 || row >= point_count || wisp < 0 ||
+        static_cast<size_t>(wisp) + 1 >= guides.wisp_tetrahedron_offsets.size())
+      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
+                                         " names a point or wisp that does not exist");
+    int32_t first = guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp)];
+    int32_t tetrahedron = first + guides.binding_tetrahedron[b];
+    if (guides.binding_tetrahedron[b] < 0 ||
+        tetrahedron >= guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp) + 1])
+      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
+                                         " names a tetrahedron its wisp does not have");
+    binding.tetrahedron[static_cast<size_t>(row)] = tetrahedron;
+    binding.offset_m.row(row) = guides.binding_local_m[b].transpose();
+  }
+
+  const int8_t fixed_style = static_cast<int8_t>(HairStyle::fixed);
+  auto style_of_point = [&](int64_t row) {
+    int32_t cluster = point_cluster[static_cast<size_t>(row)];
+    if (cluster < 0 || static_cast<size_t>(cluster) >= guides.cluster_simulated_style.size())
+      throw Error::runtime("strands", "point " + std::to_string(row) + " names cluster " +
+                                          std::to_string(cluster) + ", which the guides lack");
+    return guides.cluster_simulated_style[static_cast<size_t>(cluster)];
+  };
+
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t begin = strands.offsets[si], end = strands.offsets[si + 1];
+    const int64_t size = end - begin;
+    // Bound points run from the first one to the tip.
+    int64_t bound_from = size;
+    for (int64_t i = 0; i < size; ++i) {
+      if (binding.tetrahedron[static_cast<size_t>(begin + i)] >= 0) {
+        bound_from = i;
+        break;
+      }
+    }
+    for (int64_t i = bound_from; i < size; ++i)
+      if (binding.tetrahedron[static_cast<size_t>(begin + i)] < 0)
+        throw Error::runtime("guides", "strand " + std::to_string(s) +
+                                           ": its points bound to a wisp do not run to its tip");
+    int64_t held = 0;
+    while (held < bound_from && style_of_point(begin + held) == fixed_style) ++held;
+    binding.bound_from[si] = bound_from;
+    binding.held_count[si] = held;
+    binding.interpolated_from[si] = held;
+    for (int64_t i = 0; i < held; ++i)
+      binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+
+    if (held == bound_from) {
+      binding.method[si] = held == size ? InterpolationMethod::fixed : InterpolationMethod::braided;
+      continue;
+    }
+    if (bound_from < size) {
+      // Bridged from the head (the last held point, or the root) to the wisp.
+      const int64_t from = held > 0 ? held - 1 : 0;
+      std::vector<double> arc(static_cast<size_t>(bound_from - from + 1), 0.0);
+      for (int64_t i = from + 1; i <= bound_from; ++i)
+        arc[static_cast<size_t>(i - from)] =
+            arc[static_cast<size_t>(i - from - 1)] +
+            (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+      const int32_t tetrahedron = binding.tetrahedron[static_cast<size_t>(begin + bound_from)];
+      for (int64_t i = held; i < bound_from; ++i) {
+        const auto row = static_cast<size_t>(begin + i);
+        binding.parameter[row] =
+            arc.back() > 0 ? static_cast<float>(arc[static_cast<size_t>(i - from)] / arc.back())
+                           : 0.0f;
+        binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+        binding.tetrahedron[row] = tetrahedron;
+      }
+      binding.bridged[si] = 1;
+      binding.method[si] = InterpolationMethod::braided;
+      continue;
+    }
+    if (usable.empty()) {  // nothing to follow: held by the head
+      binding.held_count[si] = bound_from;
+      binding.interpolated_from[si] = bound_from;
+      for (int64_t i = held; i < bound_from; ++i)
+        binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+      binding.method[si] = InterpolationMethod::fixed;
+      continue;
+    }
+
+    // The anchor: the last held point, or the root; the cluster of the first moving point.
+    const int64_t anchor = held > 0 ? held - 1 : 0;
+    const Vec3 anchor_m = point_of(strands.points, begin + anchor);
+    const int32_t cluster = point_cluster[static_cast<size_t>(begin + held)];
+    // Arc parameter from the anchor to the tip.
+    std::vector<double> arc(static_cast<size_t>(size - anchor), 0.0);
+    for (int64_t i = anchor + 1; i < size; ++i)
+      arc[static_cast<size_t>(i - anchor)] =
+          arc[static_cast<size_t>(i - anchor - 1)] +
+          (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+    const double length = arc.back();
+    // The arc parameter along guides of rest length `guide_m`: a strand as long as they
+    // are or longer spans them (its tip follows theirs), a shorter one follows their first
+    // `length` metres (its tip follows the guide's point as far from the anchor). Spread
+    // over the whole guide, a strand a fifth its length would have each point follow a
+    // guide point five times as far out, and stretch as the guide bends.
+    auto parameter_along = [&](int64_t i, double guide_m) {
+      const double span = std::max(length, guide_m);
+      return span > 0 ? arc[static_cast<size_t>(i - anchor)] / span : 0.0;
+    };
+    // Mean distance at rest from the strand's moving points to guide g at the same arc
+    // parameter: the size of the offsets g would have to carry.
+    auto mean_offset_m = [&](int32_t g) {
+      double sum = 0;
+      for (int64_t i = held; i < bound_from; ++i)
+        sum += (point_of(strands.points, begin + i) -
+                guide_rest_point(guides, g,
+                                 parameter_along(i, guide_length_m[static_cast<size_t>(g)])))
+                   .norm();
+      return sum / static_cast<double>(std::max<int64_t>(1, bound_from - held));
+    };
+    std::vector<int32_t> nearest =
+        index.nearest(anchor_m.cast<float>(),
+                      std::min<int>(params.candidate_guides, static_cast<int>(usable.size())));
+    std::array<int32_t, 3> chosen = {-1, -1, -1};
+    std::array<double, 3> weights = {1, 0, 0};
+    bool barycentric = nearest.size() >= 3;
+    for (size_t k = 0; k < 3 && barycentric; ++k)
+      barycentric =
+          guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] == cluster;
+    // Long enough to follow.
+    const double shortest_m = params.min_guide_length_ratio * length;
+    auto long_enough = [&](int32_t g) {
+      return guide_length_m[static_cast<size_t>(g)] >= shortest_m;
+    };
+    for (size_t k = 0; k < 3 && barycentric; ++k)
+      barycentric = long_enough(usable[static_cast<size_t>(nearest[k])]);
+    if (barycentric) {
+      for (size_t a = 0; a < 3; ++a)
+        for (size_t b = a + 1; b < 3; ++b)
+          if (direction[static_cast<size_t>(nearest[a])].dot(
+                  direction[static_cast<size_t>(nearest[b])]) < params.min_direction_cosine)
+            barycentric = false;
+    }
+    if (barycentric) {
+      Vec3 a = anchors.row(nearest[0]).cast<double>().transpose();
+      Vec3 b = anchors.row(nearest[1]).cast<double>().transpose();
+      Vec3 c = anchors.row(nearest[2]).cast<double>().transpose();
+      if (triangle_aspect(a, b, c) < params.min_triangle_aspect) {
+        barycentric = false;
+      } else {
+        weights = clamped_barycentric(anchor_m, a, b, c);
+        for (size_t k = 0; k < 3; ++k) chosen[k] = usable[static_cast<size_t>(nearest[k])];
+      }
+    }
+    if (!barycentric) {
+      // Clump: of the candidates, the guide whose rest shape lies closest to the strand's
+      // (the least mean offset: the nearest root alone can be a short guide that a long
+      // strand would swing around): one of the strand's cluster long enough to follow;
+      // else one long enough of another cluster simulated alike; else the best of the
+      // cluster whatever its length; else the nearest guide of the cluster; else the
+      // nearest guide.
+      const int8_t simulated_as = style_of_point(begin + held);
+      std::vector<double> candidate_offset_m(nearest.size(), -1);  // each worked out once
+      auto best_of = [&](auto&& admits) {
+        int32_t found = -1;
+        double best_offset = std::numeric_limits<double>::infinity();
+        for (size_t c = 0; c < nearest.size(); ++c) {
+          const int32_t g = usable[static_cast<size_t>(nearest[c])];
+          if (!admits(g)) continue;
+          if (candidate_offset_m[c] < 0) candidate_offset_m[c] = mean_offset_m(g);
+          if (candidate_offset_m[c] < best_offset) {
+            best_offset = candidate_offset_m[c];
+            found = nearest[c];
+          }
+        }
+        return found;
+      };
+      auto in_cluster = [&](int32_t g) {
+        return guides.cluster[static_cast<size_t>(g)] == cluster;
+      };
+      int32_t best = best_of([&](int32_t g) { return in_cluster(g) && long_enough(g); });
+      if (best < 0)
+        best = best_of([&](int32_t g) {
+          const auto guide_cluster = static_cast<size_t>(guides.cluster[static_cast<size_t>(g)]);
+          return long_enough(g) && guide_cluster < guides.cluster_simulated_style.size() &&
+                 guides.cluster_simulated_style[guide_cluster] == simulated_as;
+        });
+      if (best < 0) best = best_of(in_cluster);
+      if (best < 0) {
+        double best_distance = std::numeric_limits<double>::infinity();
+        for (size_t i = 0; i < usable.size(); ++i) {
+          if (guides.cluster[static_cast<size_t>(usable[i])] != cluster) continue;
+          double d =
+              (anchors.row(static_cast<Eigen::Index>(i)).cast<double>().transpose() - anchor_m)
+                  .squaredNorm();
+          if (d < best_distance) {
+            best_distance = d;
+            best = static_cast<int32_t>(i);
+          }
+        }
+      }
+      if (best < 0) best = nearest.front();
+      chosen = {usable[static_cast<size_t>(best)], -1, -1};
+      weights = {1, 0, 0};
+    }
+    binding.method[si] =
+        barycentric ? InterpolationMethod::barycentric : InterpolationMethod::clump;
+    binding.guides[si] = chosen;
+    for (size_t k = 0; k < 3; ++k) binding.weights[si][k] = static_cast<float>(weights[k]);
+    // Normalised again in float, so the weights sum to 1 as the frames use them.
+    float sum = binding.weights[si][0] + binding.weights[si][1] + binding.weights[si][2];
+    for (float& weight : binding.weights[si]) weight /= sum;
+
+    // The rest offsets from the weighted guides at each point's arc parameter, along the
+    // guides' weighted length (one parameter for the three guides of a barycentric strand).
+    double guides_m = 0;
+    for (size_t k = 0; k < 3; ++k)
+      if (chosen[k] >= 0)
+        guides_m += static_cast<double>(binding.weights[si][k]) *
+                    guide_length_m[static_cast<size_t>(chosen[k])];
+    for (int64_t i = held; i < bound_from; ++i) {
+      auto uf = static_cast<float>(parameter_along(i, guides_m));
+      Vec3 blended = Vec3::Zero();
+      for (size_t k = 0; k < 3; ++k)
+        if (chosen[k] >= 0)
+          blended += static_cast<double>(binding.weights[si][k]) *
+                     guide_rest_point(guides, chosen[k], static_cast<double>(uf));
+      binding.parameter[static_cast<size_t>(begin + i)] = uf;
+      binding.offset_m.row(begin + i) =
+          (point_of(strands.points, begin + i) - blended).cast<float>().transpose();
+    }
+  }
+
+  // The interpolated points' runs.
+  binding.run_offsets.assign(static_cast<size_t>(strand_count) + 1, 0);
+  binding.run_of_point.assign(static_cast<size_t>(point_count), 0);
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t begin = strands.offsets[si];
+    const int64_t from = begin + binding.interpolated_from[si];
+    const int64_t to = begin + binding.bound_from[si];
+    if (!binding.bridged[si] && from < to) {
+      const StrandGuides used = strand_guides(binding, s);
+      strand_runs(used.segments.data(), used.count, binding.parameter.data() + from, to - from,
+                  binding.run_of_point.data() + from, binding.run_particles);
+    }
+    binding.run_offsets[si + 1] = static_cast<int64_t>(binding.run_particles.size());
+  }
+  return binding;
+}
+
+StrandGuides strand_guides(const StrandBinding& binding, int64_t strand) {
+  StrandGuides used;
+  const auto si = static_cast<size_t>(strand);
+  for (size_t k = 0; k < 3; ++k) {
+    const int32_t g = binding.guides[si][k];
+    if (g < 0) continue;
+    const auto n = static_cast<size_t>(used.count++);
+    used.guide[n] = g;
+    used.segments[n] = static_cast<float>(binding.guide_offsets[static_cast<size_t>(g) + 1] -
+                                          binding.guide_offsets[static_cast<size_t>(g)] - 1);
+    used.weight[n] = binding.weights[si][k];
+  }
+  return used;
+}
+
+namespace {
+
+/// Per guide particle of one frame: its position and frame (see interpolate_frame()).
+void guide_frame_table(const StrandBinding& binding, const GuideFrame& frame, Column* table) {
+  const float* rest_points = binding.guide_rest_points.data();
+  const int64_t guides = static_cast<int64_t>(binding.guide_offsets.size()) - 1;
+  const Eigen::Quaterniond head = frame.head.rotation.normalized();
+  auto put = [&](int64_t row, const Eigen::Quaterniond& q) {
+    Eigen::Matrix3f m = q.toRotationMatrix().cast<float>();
+    Column* out = table + row * kColumns;
+    const float* p = frame.guide_points_m + 3 * row;
+    out[0] = Column(p[0], p[1], p[2], 0);
+    for (int c = 0; c < 3; ++c) out[2 + 2 * c] = Column(m(0, c), m(1, c), m(2, c), 0);
+  };
+  std::vector<Eigen::Quaterniond> segment;
+  for (int64_t g = 0; g < guides; ++g) {
+    const int64_t first = binding.guide_offsets[static_cast<size_t>(g)];
+    const int64_t count = binding.guide_offsets[static_cast<size_t>(g) + 1] - first;
+    segment.resize(static_cast<size_t>(count - 1));
+    for (int64_t j = 0; j + 1 < count; ++j) {
+      const float* r0 = rest_points + 3 * (first + j);
+      const float* p0 = frame.guide_points_m + 3 * (first + j);
+      Vec3 rest_direction(r0[3] - r0[0], r0[4] - r0[1], r0[5] - r0[2]);
+      Vec3 now(p0[3] - p0[0], p0[4] - p0[1], p0[5] - p0[2]);
+      Vec3 carried = head * rest_direction;
+      Eigen::Quaterniond turn = Eigen::Quaterniond::Identity();
+      if (carried.squaredNorm() > 0 && now.squaredNorm() > 0)
+        turn = Eigen::Quaterniond::FromTwoVectors(carried, now);
+      segment[static_cast<size_t>(j)] = (turn * head).normalized();
+    }
+    put(first, head);
+    for (int64_t k = 1; k < count; ++k) {
+      Eigen::Quaterniond q = segment[static_cast<size_t>(k - 1)];
+      if (k + 1 < count) {
+        Eigen::Quaterniond next = segment[static_cast<size_t>(k)];
+        if (q.dot(next) < 0) next.coeffs() = -next.coeffs();
+        q.coeffs() += next.coeffs();
+        q.normalize();
+      }
+      put(first + k, q);
+    }
+    // Particle k's record as the kernel reads it: the columns C_k and the steps B_k =
+    // C_k+1 - C_k make C(u) = C_k + (u S - k) B_k on the segment (S segments), so the
+    // record holds, per column, P_k = C_k - k B_k and then Q_k = S B_k, and C(u) = P_k +
+    // u Q_k.
+    const auto segments = static_cast<float>(count - 1);
+    for (int64_t k = 0; k < count; ++k) {
+      Column* here = table + (first + k) * kColumns;
+      for (int c = 0; c < 8; c += 2) {
+        const Column step = k + 1 < count ? Column(here[kColumns + c] - here[c]) : Column::Zero();
+        here[c] -= static_cast<float>(k) * step;
+        here[c + 1] = segments * step;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
+                       const GuideFrame& frame, std::vector<float>& points_m) {
+  const int64_t strand_count = strands.strand_count();
+  points_m.resize(static_cast<size_t>(strands.point_count()) * 3);
+  // The table on a 64-byte boundary (the kernel's loads are aligned).
+  std::vector<Column> table_storage(
+      static_cast<size_t>(binding.guide_rest_points.rows()) * kColumns + 3);
+  Column* table = table_storage.data() +
+                  (4 - reinterpret_cast<uintptr_t>(table_storage.data()) / sizeof(Column) % 4) % 4;
+  guide_frame_table(binding, frame, table);
+  // Rigid frames in transform_points()'s layout: per wisp tetrahedron, where it is now,
+  // and the move from its rest (for bridged points); and the head.
+  auto put_frame = [](float* record, const Eigen::Vector3f& origin, const Eigen::Matrix3f& m) {
+    for (int r = 0; r < 3; ++r) {
+      record[r] = origin[r];
+      for (int c = 0; c < 3; ++c) record[4 + 4 * c + r] = m(r, c);
+    }
+  };
+  const auto tetrahedron_count = static_cast<size_t>(binding.tetrahedron_count);
+  std::vector<float> tetrahedron_frames(tetrahedron_count * kFrameFloats),
+      bridge_frames(tetrahedron_count * kFrameFloats);
+  for (int64_t t = 0; t < binding.tetrahedron_count; ++t) {
+    const float* in = frame.wisp_frames + 7 * t;
+    const float* rest = binding.wisp_rest_frames.data() + 7 * t;
+    Eigen::Matrix3f m =
+        Eigen::Quaternionf(in[3], in[4], in[5], in[6]).normalized().toRotationMatrix();
+    Eigen::Matrix3f m_rest =
+        Eigen::Quaternionf(rest[3], rest[4], rest[5], rest[6]).normalized().toRotationMatrix();
+    Eigen::Matrix3f delta = m * m_rest.transpose();
+    Eigen::Vector3f shift =
+        Eigen::Vector3f(in[0], in[1], in[2]) - delta * Eigen::Vector3f(rest[0], rest[1], rest[2]);
+    put_frame(tetrahedron_frames.data() + t * kFrameFloats, Eigen::Vector3f(in[0], in[1], in[2]),
+              m);
+    put_frame(bridge_frames.data() + t * kFrameFloats, shift, delta);
+  }
+  float head_frame[kFrameFloats] = {};
+  put_frame(head_frame, frame.head.translation_m.cast<float>(),
+            frame.head.rotation.normalized().toRotationMatrix().cast<float>());
+  const float* offset = binding.offset_m.data();
+  float* out = points_m.data();
+
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t begin = strands.offsets[si];
+    const int64_t end = strands.offsets[si + 1];
+    const int64_t interpolated = begin + binding.interpolated_from[si];
+    const int64_t bound = begin + binding.bound_from[si];
+    // Held: R p + t.
+    transform_points(head_frame, nullptr, offset + 3 * begin, interpolated - begin,
+                     out + 3 * begin);
+    // Bridged: (1 - s) (R p + t) + s (D p + c) for the tetrahedron's D, c.
+    if (binding.bridged[si]) {
+      for (int64_t row = interpolated; row < bound; ++row) {
+        const float share = binding.parameter[static_cast<size_t>(row)];
+        const float* p = offset + 3 * row;
+        const float* h = head_frame;
+        const float* t =
+            bridge_frames.data() +
+            static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * kFrameFloats;
+        for (int r = 0; r < 3; ++r) {
+          float with_head = h[4 + r] * p[0] + h[8 + r] * p[1] + h[12 + r] * p[2] + h[r];
+          float with_wisp = t[r] + t[4 + r] * p[0] + t[8 + r] * p[1] + t[12 + r] * p[2];
+          out[3 * row + r] = (1 - share) * with_head + share * with_wisp;
+        }
+      }
+    } else if (interpolated < bound) {
+      // Interpolated: sum_g w_g (G_g(u) + F_g(u) d), in runs where the strand has them.
+      const StrandGuides used = strand_guides(binding, s);
+      const float* guide_table[3];
+      for (size_t k = 0; k < static_cast<size_t>(used.count); ++k)
+        guide_table[k] = table->data() + binding.guide_offsets[static_cast<size_t>(used.guide[k])] *
+                                             kParticleFloats;
+      const int64_t first_run = binding.run_offsets[si];
+      const auto run_count = static_cast<int>(binding.run_offsets[si + 1] - first_run);
+      if (run_count > 0)
+        interpolate_strand_runs(guide_table, used.weight.data(), used.count,
+                                binding.run_particles.data() + first_run, run_count,
+                                binding.run_of_point.data() + interpolated,
+                                binding.parameter.data() + interpolated, offset + 3 * interpolated,
+                                bound - interpolated, out + 3 * interpolated);
+      else
+        interpolate_strand_points(guide_table, used.segments.data(), used.weight.data(), used.count,
+                                  binding.parameter.data() + interpolated,
+                                  offset + 3 * interpolated, bound - interpolated,
+                                  out + 3 * interpolated);
+    }
+    // Bound: origin + R_tet local.
+    transform_points(tetrahedron_frames.data(), binding.tetrahedron.data() + bound,
+                     offset + 3 * bound, end - bound, out + 3 * bound);
+  }
+}
+
+}  // namespace hair

@@ -1,0 +1,138 @@
+#include "hair/mesh/quad_recovery.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+namespace hair {
+namespace {
+
+uint64_t directed_edge_key(int32_t from, int32_t to) {
+  return (static_cast<uint64_t>(static_cast<uint32_t>(from)) << 32) | static_cast<uint32_t>(to);
+}
+
+struct PairCandidate {
+  double worst_corner_deviation_deg;
+  int64_t face_a;
+  int64_t face_b;
+  int corner_a;  ///< the shared edge runs from corner_a to corner_a+1 of face_a
+  int corner_b;  ///< and from corner_b+1 to corner_b of face_b
+};
+
+double corner_deviation_deg(const PolyMesh& mesh, const std::array<int32_t, 4>& quad) {
+  double worst = 0;
+  for (int c = 0; c < 4; ++c) {
+    Eigen::Vector3d here = mesh.vertices.row(quad[c]).cast<double>();
+    Eigen::Vector3d to_next =
+        mesh.vertices.row(quad[(c + 1) % 4]).cast<double>().transpose() - here;
+    Eigen::Vector3d to_prev =
+        mesh.vertices.row(quad[(c + 3) % 4]).cast<double>().transpose() - here;
+    double norms = to_next.norm() * to_prev.norm();
+    if (norms <= 0) return 180.0;
+    double angle = std::acos(std::clamp(to_next.dot(to_prev) / norms, -1.0, 1.0));
+    worst = std::max(worst, std::abs(angle * 180.0 / std::numbers::pi - 90.0));
+  }
+  return worst;
+}
+
+double squared_edge_length(const PolyMesh& mesh, int32_t a, int32_t b) {
+  return (mesh.vertices.row(a) - mesh.vertices.row(b)).squaredNorm();
+}
+
+bool is_longest_edge(const PolyMesh& mesh, std::span<const int32_t> triangle, int corner) {
+  double shared = squared_edge_length(mesh, triangle[corner], triangle[(corner + 1) % 3]);
+  for (int c = 0; c < 3; ++c)
+    if (squared_edge_length(mesh, triangle[c], triangle[(c + 1) % 3]) > shared * (1 + 1e-6))
+      return false;
+  return true;
+}
+
+}  // namespace
+
+QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviation_deg) {
+  std::unordered_map<uint64_t, std::pair<int64_t, int>> triangle_with_edge;
+  for (int64_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.face_size(f) != 3) continue;
+    auto triangle = mesh.face(f);
+    for (int c = 0; c < 3; ++c)
+      triangle_with_edge[directed_edge_key(triangle[c], triangle[(c + 1) % 3])] = {f, c};
+  }
+
+  std::vector<PairCandidate> candidates;
+  for (int64_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.face_size(f) != 3) continue;
+    auto triangle = mesh.face(f);
+    for (int c = 0; c < 3; ++c) {
+      auto found = triangle_with_edge.find(directed_edge_key(triangle[(c + 1) % 3], triangle[c]));
+      if (found == triangle_with_edge.end() || found->second.first <= f) continue;
+      auto [other_face, other_corner] = found->second;
+      auto other = mesh.face(other_face);
+      if (!is_longest_edge(mesh, triangle, c) && !is_longest_edge(mesh, other, other_corner))
+        continue;
+      // Shared edge a->b in this triangle (a, b, c2), b->a in the other (b, a, d):
+      // the quad is (a, d, b, c2).
+      int32_t apex_other = other[(other_corner + 2) % 3];
+      std::array<int32_t, 4> quad = {triangle[c], apex_other, triangle[(c + 1) % 3],
+                                     triangle[(c + 2) % 3]};
+      double deviation = corner_deviation_deg(mesh, quad);
+      if (deviation <= max_corner_deviation_deg)
+        candidates.push_back({deviation, f, other_face, c, other_corner});
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
+    return std::tie(x.worst_corner_deviation_deg, x.face_a, x.face_b) <
+           std::tie(y.worst_corner_deviation_deg, y.face_a, y.face_b);
+  });
+
+  std::vector<int64_t> partner(static_cast<size_t>(mesh.face_count()), -1);
+  std::vector<std::array<int64_t, 4>> quad_corners(static_cast<size_t>(mesh.face_count()));
+  for (const PairCandidate& candidate : candidates) {
+    if (partner[candidate.face_a] >= 0 || partner[candidate.face_b] >= 0) continue;
+    partner[candidate.face_a] = candidate.face_b;
+    partner[candidate.face_b] = candidate.face_a;
+    int64_t base_a = mesh.face_offsets[candidate.face_a];
+    int64_t base_b = mesh.face_offsets[candidate.face_b];
+    quad_corners[candidate.face_a] = {
+        base_a + candidate.corner_a, base_b + (candidate.corner_b + 2) % 3,
+        base_a + (candidate.corner_a + 1) % 3, base_a + (candidate.corner_a + 2) % 3};
+  }
+
+  QuadRecovery recovery;
+  recovery.mesh.vertices = mesh.vertices;
+  std::vector<float> uv;
+  std::vector<int32_t> face;
+  auto emit_corners = [&](std::span<const int64_t> corners, int64_t source_face) {
+    face.clear();
+    for (int64_t corner : corners) {
+      face.push_back(mesh.face_vertices[corner]);
+      if (mesh.has_uv()) {
+        uv.push_back(mesh.corner_uv(corner, 0));
+        uv.push_back(mesh.corner_uv(corner, 1));
+      }
+    }
+    recovery.mesh.append_face(face);
+    recovery.source_face.push_back(source_face);
+  };
+  std::vector<int64_t> corners;
+  for (int64_t f = 0; f < mesh.face_count(); ++f) {
+    if (partner[f] >= 0) {
+      if (partner[f] < f) continue;  // emitted with its partner
+      recovery.triangles_paired += 2;
+      emit_corners(quad_corners[f], f);
+      continue;
+    }
+    if (mesh.face_size(f) == 3) ++recovery.triangles_left;
+    corners.clear();
+    for (int64_t corner = mesh.face_offsets[f]; corner < mesh.face_offsets[f + 1]; ++corner)
+      corners.push_back(corner);
+    emit_corners(corners, f);
+  }
+  if (mesh.has_uv())
+    recovery.mesh.corner_uv =
+        Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
+  return recovery;
+}
+
+}  // namespace hair

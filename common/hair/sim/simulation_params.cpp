@@ -1,0 +1,83 @@
+#include "hair/sim/simulation_params.h"
+
+namespace hair {
+
+void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
+  SimulationParams& p = values.simulation;
+  StrandMaterial& m = p.material;
+  params.add("motion", values.motion,
+             "head motion preset (the keyframes of --keyframes replace it)",
+             HeadMotion::preset_names());
+  params.add("fps", p.fps, "frames per second", ParamRange::closed(1, 1000));
+  params.add("duration_s", p.duration_s, "seconds to simulate; 0: one cycle of the motion",
+             ParamRange::closed(0, 3600));
+  params.add("substeps", p.substeps, "time steps per frame", ParamRange::closed(1, 1000));
+  params.add("guide_count", p.guide_count,
+             "guide strands over the normal and short clusters (paper: 169)",
+             ParamRange::closed(0, 1000000));
+  params.add("segment_length_h", p.segment_length_h,
+             "guide particle spacing along normal hair, in H", ParamRange::closed(0.005, 1));
+  params.add("short_segment_factor", p.short_segment_factor,
+             "short hair: segments this many times longer (fewer particles, stiffer)",
+             ParamRange::closed(1, 10));
+  params.add("wisp_segment_factor", p.wisp_segment_factor,
+             "a braid's wisp centre strand: segments this many times longer",
+             ParamRange::closed(0.25, 10));
+  params.add("wisp_gather_radius_h", p.wisp_gather_radius_h,
+             "a braid's strands form its wisp where their mean distance from their mean point "
+             "is within this, in H",
+             ParamRange::above(0));
+  params.add("mass_per_length_kg_m", p.mass_per_length_kg_m,
+             "mass of a guide per metre (it stands for a lock of hair), kg/m",
+             ParamRange::above(0));
+  params.add("edge_stiffness_per_kg", m.edge_stiffness_per_kg,
+             "stretch springs, stiffness per kg of their particles (1/s^2)",
+             ParamRange::at_least(0));
+  params.add("bend_stiffness_per_kg", m.bend_stiffness_per_kg,
+             "bending springs (particle k to k + 2), per kg (1/s^2)", ParamRange::at_least(0));
+  params.add("torsion_stiffness_per_kg", m.torsion_stiffness_per_kg,
+             "torsion springs (particle k to k + 3), per kg (1/s^2)", ParamRange::at_least(0));
+  params.add("altitude_stiffness_per_kg", m.altitude_stiffness_per_kg,
+             "altitude springs (one per tetrahedron), per kg (1/s^2)", ParamRange::at_least(0));
+  params.add("anchor_stiffness_per_kg", m.anchor_stiffness_per_kg,
+             "springs from a braid's wisp to the strand ends it hangs from, per kg (1/s^2)",
+             ParamRange::at_least(0));
+  params.add("damping_ratio", m.damping_ratio, "spring damping, a fraction of critical",
+             ParamRange::closed(0, 10));
+  params.add("drag_per_s", m.drag_per_s, "air drag: velocity lost per second",
+             ParamRange::closed(0, 1000));
+  params.add("max_stretch", m.max_stretch, "hair segments are kept within this strain",
+             ParamRange::closed(0, 1));
+  params.add("gravity_m_s2", p.gravity_m_s2, "gravity along -Y, m/s^2",
+             ParamRange::closed(0, 1000));
+  params.add("body_clearance_h", p.body_clearance_h,
+             "hair particles are kept this far outside the body, in H", ParamRange::closed(0, 0.2));
+  params.add("body_voxel_h", p.body_voxel_h, "spacing of the body's signed distance field, in H",
+             ParamRange::closed(0.002, 0.2));
+  params.add("body_band_h", p.body_band_h,
+             "the field holds exact distances this far from the body, in H",
+             ParamRange::closed(0.004, 1));
+  params.add("friction", p.friction, "Coulomb friction of hair on the body",
+             ParamRange::closed(0, 10));
+  params.add("body_collisions", p.body_collisions,
+             "collide hair with the body (--body_collisions=false: pass through it)");
+  params.add("repulsion_m_s2", p.repulsion_m_s2,
+             "hair-hair repulsion down the density gradient, m/s^2 (0: none)",
+             ParamRange::closed(0, 1000));
+  params.add("density_cell_h", p.density_cell_h, "cell of the hair density grid, in H",
+             ParamRange::closed(0.005, 1));
+  params.add("repulsion_interval_frames", p.repulsion_interval_frames,
+             "the repulsion is worked out every this many frames and held in between (1: "
+             "every frame)",
+             ParamRange::closed(1, 100));
+  params.add("settle_speed_h_s", p.settle_speed_h_s,
+             "a still head: integration stops when no particle is faster than this (H/s) ...",
+             ParamRange::closed(0, 100));
+  params.add("settle_frames", p.settle_frames, "... for this many frames in a row",
+             ParamRange::closed(1, 100000));
+  params.add("by_style", p.by_style,
+             "simulate each cluster by its style (--by_style=false: all as normal hair, the "
+             "style rules off; for benchmarks)");
+}
+
+}  // namespace hair

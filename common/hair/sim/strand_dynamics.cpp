@@ -1,0 +1,442 @@
+#include "hair/sim/strand_dynamics.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "hair/sim/banded_cholesky.h"
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Particles a spring reaches along the sequence: q_k to q_k+3, so 3 particles, and
+/// the band of the system holds 3 * 3 + 2 super-diagonals.
+constexpr int kParticleReach = 3;
+constexpr int kBandwidth = 3 * kParticleReach + 2;
+
+/// A spring as a linear form: length = direction . sum_i weight_i x_{particle_i}.
+struct LinearSpring {
+  std::array<int32_t, 4> particle{};
+  std::array<double, 4> weight{};
+  int count = 0;
+  Vec3 direction = Vec3::Zero();
+  double length_m = 0, rest_length_m = 0, stiffness = 0, damping = 0;
+};
+
+double mean_mass(const AltitudeStrand& strand, const LinearSpring& spring) {
+  double sum = 0;
+  for (int i = 0; i < spring.count; ++i)
+    sum += strand.mass_kg[static_cast<size_t>(spring.particle[static_cast<size_t>(i)])];
+  return sum / spring.count;
+}
+
+/// Stiffness and damping per kilogram of the three kinds of two-particle spring (edge,
+/// bend, torsion, in SpringKind's order) and of the altitudes: worked out once per pass,
+/// not once per spring (a square root each).
+struct SpringConstants {
+  std::array<double, 4> stiffness_per_kg{}, damping_per_kg{};
+  explicit SpringConstants(const StrandMaterial& material) {
+    stiffness_per_kg = {material.edge_stiffness_per_kg, material.bend_stiffness_per_kg,
+                        material.torsion_stiffness_per_kg, material.altitude_stiffness_per_kg};
+    for (size_t i = 0; i < 4; ++i)
+      damping_per_kg[i] = 2 * material.damping_ratio * std::sqrt(stiffness_per_kg[i]);
+  }
+};
+constexpr size_t kAltitudeConstants = 3;
+
+/// Calls `visit(LinearSpring)` for every spring of the strand at `position_m`, anchors
+/// excluded; a spring of zero length (no direction) is left out.
+template <typename Visit>
+void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& material,
+                     const std::vector<Vec3>& position_m, Visit&& visit) {
+  const SpringConstants constants(material);
+  LinearSpring linear;
+  linear.count = 2;
+  for (const TwoParticleSpring& spring : strand.springs) {
+    Vec3 span =
+        position_m[static_cast<size_t>(spring.b)] - position_m[static_cast<size_t>(spring.a)];
+    double length = span.norm();
+    if (!(length > 1e-12)) continue;
+    linear.particle[0] = spring.a;
+    linear.particle[1] = spring.b;
+    linear.weight[0] = -1;
+    linear.weight[1] = 1;
+    linear.direction = span / length;
+    linear.length_m = length;
+    linear.rest_length_m = spring.rest_length_m;
+    double mass = 0.5 * (strand.mass_kg[static_cast<size_t>(spring.a)] +
+                         strand.mass_kg[static_cast<size_t>(spring.b)]);
+    auto kind = static_cast<size_t>(spring.kind);
+    linear.stiffness = constants.stiffness_per_kg[kind] * mass;
+    linear.damping = constants.damping_per_kg[kind] * mass;
+    visit(linear);
+  }
+  linear.count = 4;
+  for (const ChainTetrahedron& tetrahedron : strand.tetrahedra) {
+    std::array<Vec3, 4> corners;
+    for (size_t i = 0; i < 4; ++i)
+      corners[i] = position_m[static_cast<size_t>(tetrahedron.particle[i])];
+    int best_which = most_robust_altitude(corners);
+    if (best_which < 0) continue;
+    Altitude best = tetrahedron_altitude(corners, best_which);
+    linear.particle = tetrahedron.particle;
+    linear.weight = best.weight;
+    linear.direction = best.direction;
+    linear.length_m = best.length_m;
+    linear.rest_length_m = tetrahedron.rest_altitude_m[static_cast<size_t>(best_which)];
+    double mass = mean_mass(strand, linear);
+    linear.stiffness = constants.stiffness_per_kg[kAltitudeConstants] * mass;
+    linear.damping = constants.damping_per_kg[kAltitudeConstants] * mass;
+    visit(linear);
+  }
+}
+
+/// A spring's elastic energy, k (l - L)^2 / 2.
+double spring_energy(const LinearSpring& spring) {
+  const double stretch = spring.length_m - spring.rest_length_m;
+  return 0.5 * spring.stiffness * stretch * stretch;
+}
+
+/// Brings each free ghost's distances to its two hair neighbours (its edge springs)
+/// within `max_stretch` of their rest lengths, keeping its angle about their segment.
+/// The springs alone do not hold a ghost: linearised along their directions at the start
+/// of the step, they let it move across them unopposed, and under a fast head (a violent
+/// shake at the default step, any shake at a step of a tenth of a second) ghosts drift
+/// metres off their strand while its hair stays within the strain limit.
+void limit_ghosts(const AltitudeStrand& strand, const StrandMaterial& material,
+                  std::vector<Vec3>& x) {
+  const double low = 1 - material.max_stretch, high = 1 + material.max_stretch;
+  for (int32_t q = std::max(strand.kinematic_count, 1); q + 1 < strand.particle_count(); ++q) {
+    auto k = static_cast<size_t>(q);
+    if (!strand.is_ghost[k]) continue;
+    // A ghost always lies between two hair particles.
+    const Vec3& a = x[k - 1];
+    const Vec3& b = x[k + 1];
+    // Squared lengths first: most ghosts are within bounds, and cost no square root.
+    const double rest_a2 = (strand.rest_m[k] - strand.rest_m[k - 1]).squaredNorm();
+    const double rest_b2 = (strand.rest_m[k + 1] - strand.rest_m[k]).squaredNorm();
+    const double length_a2 = (x[k] - a).squaredNorm(), length_b2 = (b - x[k]).squaredNorm();
+    if (length_a2 >= low * low * rest_a2 && length_a2 <= high * high * rest_a2 &&
+        length_b2 >= low * low * rest_b2 && length_b2 <= high * high * rest_b2)
+      continue;
+    const double rest_a = std::sqrt(rest_a2), rest_b = std::sqrt(rest_b2);
+    const double target_a = std::clamp(std::sqrt(length_a2), low * rest_a, high * rest_a);
+    const double target_b = std::clamp(std::sqrt(length_b2), low * rest_b, high * rest_b);
+    Vec3 axis = b - a;
+    const double d = axis.norm();
+    if (!(d > 1e-12)) continue;
+    axis /= d;
+    // The circle of points at target_a from a and target_b from b: its plane's distance t
+    // from a along the axis and its radius.
+    const double t = (target_a * target_a - target_b * target_b + d * d) / (2 * d);
+    const double radius = std::sqrt(std::max(0.0, target_a * target_a - t * t));
+    Vec3 across = (x[k] - a) - (x[k] - a).dot(axis) * axis;
+    if (!(across.norm() > 1e-12 * d)) {  // on the axis: any direction across it
+      Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+      across = axis.cross(helper);
+    }
+    x[k] = a + t * axis + radius * across.normalized();
+  }
+}
+
+}  // namespace
+
+double strand_spring_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                            const std::vector<Vec3>& position_m) {
+  double energy = 0;
+  for_each_spring(strand, material, position_m,
+                  [&](const LinearSpring& spring) { energy += spring_energy(spring); });
+  return energy;
+}
+
+double anchor_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Vec3>& position_m,
+                             const std::vector<StrandAnchor>& anchors) {
+  double energy = 0;
+  double anchor_stiffness = material.anchor_stiffness_per_kg * strand.mass_kg[0];
+  for (const StrandAnchor& anchor : anchors) {
+    double stretch = (position_m[0] - anchor.position_m).norm() - anchor.rest_length_m;
+    energy += 0.5 * anchor_stiffness * stretch * stretch;
+  }
+  return energy;
+}
+
+double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Vec3>& position_m,
+                             const std::vector<StrandAnchor>& anchors) {
+  return strand_spring_energy(strand, material, position_m) +
+         anchor_elastic_energy(strand, material, position_m, anchors);
+}
+
+double max_hair_strain(const AltitudeStrand& strand, const std::vector<Vec3>& position_m) {
+  double worst = 0;
+  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
+    auto k = static_cast<size_t>(i);
+    double length = (position_m[static_cast<size_t>(strand.hair_particle[k + 1])] -
+                     position_m[static_cast<size_t>(strand.hair_particle[k])])
+                        .norm();
+    double strain = length / strand.hair_segment_m[k] - 1;
+    if (std::abs(strain) > std::abs(worst)) worst = strain;
+  }
+  return worst;
+}
+
+void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& material,
+                         const std::vector<Vec3>& acceleration_m_s2,
+                         const Vec3& uniform_acceleration_m_s2,
+                         const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state,
+                         const StrandCollider* collider, double friction) {
+  const int32_t first_free = strand.kinematic_count;
+  const int32_t count = strand.particle_count();
+  const int n = 3 * (count - first_free);
+  std::vector<Vec3>& x = state.position_m;
+  std::vector<Vec3>& v = state.velocity_m_s;
+  if (n > 0) {
+    const int ldab = kBandwidth + 1;
+    band_.assign(static_cast<size_t>(ldab) * static_cast<size_t>(n), 0.0);
+    rhs_.assign(static_cast<size_t>(n), 0.0);
+    // A(i, j), i <= j, lives at band_[kd + i - j + j * ldab].
+    // Adds scale * d d^T to the block (qa, qb), qa <= qb: the whole block lies in the
+    // upper triangle when qa < qb, its upper half when qa == qb.
+    // `outer` holds d d^T (column-major) of the spring at hand.
+    auto add_outer = [&](int32_t qa, int32_t qb, double scale, const Eigen::Matrix3d& outer) {
+      int row0 = 3 * (qa - first_free), col0 = 3 * (qb - first_free);
+      for (int c = 0; c < 3; ++c) {
+        int j = col0 + c;
+        double* column = band_.data() + kBandwidth - j + static_cast<ptrdiff_t>(j) * ldab + row0;
+        const double* outer_column = outer.data() + 3 * c;
+        if (qa == qb) {
+          for (int r = 0; r <= c; ++r) column[r] += scale * outer_column[r];
+        } else {
+          for (int r = 0; r < 3; ++r) column[r] += scale * outer_column[r];
+        }
+      }
+    };
+    auto add_rhs = [&](int32_t q, const Vec3& value) {
+      int row0 = 3 * (q - first_free);
+      for (int r = 0; r < 3; ++r) rhs_[static_cast<size_t>(row0 + r)] += value[r];
+    };
+
+    // Inertia, drag and the external forces.
+    for (int32_t q = first_free; q < count; ++q) {
+      auto k = static_cast<size_t>(q);
+      double mass = strand.mass_kg[k];
+      // External forces act on the hair; ghosts only carry inertia (weighed down, they
+      // would bend a hanging strand sideways).
+      Vec3 acceleration = Vec3::Zero();
+      if (!strand.is_ghost[k]) {
+        acceleration = uniform_acceleration_m_s2;
+        if (!acceleration_m_s2.empty()) acceleration += acceleration_m_s2[k];
+      }
+      double diagonal = mass * (1 + dt_s * material.drag_per_s);
+      for (int r = 0; r < 3; ++r) {
+        int i = 3 * (q - first_free) + r;
+        band_[static_cast<size_t>(kBandwidth + i * ldab)] += diagonal;
+      }
+      add_rhs(q, mass * v[k] + dt_s * mass * acceleration);
+    }
+
+    // Springs.
+    auto add_spring = [&](const LinearSpring& spring, const Vec3* known_velocity_sum) {
+      double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
+      // Rate of the length from the known (kinematic) particles' velocities.
+      double known_rate = known_velocity_sum ? spring.direction.dot(*known_velocity_sum) : 0.0;
+      const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
+      for (int a = 0; a < spring.count; ++a) {
+        int32_t qa = spring.particle[static_cast<size_t>(a)];
+        double wa = spring.weight[static_cast<size_t>(a)];
+        if (qa >= first_free) {
+          add_rhs(qa, (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m) * wa) *
+                          spring.direction);
+          if (known_rate != 0) add_rhs(qa, (-implicit * wa * known_rate) * spring.direction);
+        }
+        for (int b = a; b < spring.count; ++b) {
+          int32_t qb = spring.particle[static_cast<size_t>(b)];
+          if (qa < first_free || qb < first_free) continue;
+          double coefficient = implicit * wa * spring.weight[static_cast<size_t>(b)];
+          if (qa <= qb)
+            add_outer(qa, qb, coefficient, outer);
+          else
+            add_outer(qb, qa, coefficient, outer);
+        }
+      }
+    };
+    start_spring_energy_j_ = 0;
+    for_each_spring(strand, material, x, [&](const LinearSpring& spring) {
+      start_spring_energy_j_ += spring_energy(spring);
+      if (spring.count == 2 && spring.particle[0] >= first_free) {
+        // Most springs: two free particles, weights -1 and 1 (add_spring, unrolled).
+        const int32_t qa = spring.particle[0], qb = spring.particle[1];
+        const double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
+        const Vec3 force = (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m)) *
+                           spring.direction;
+        add_rhs(qa, -force);
+        add_rhs(qb, force);
+        const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
+        add_outer(qa, qa, implicit, outer);
+        add_outer(qa, qb, -implicit, outer);
+        add_outer(qb, qb, implicit, outer);
+        return;
+      }
+      // Sum of weight * velocity over the spring's kinematic particles.
+      Vec3 known = Vec3::Zero();
+      bool any_known = false;
+      for (int a = 0; a < spring.count; ++a) {
+        int32_t qa = spring.particle[static_cast<size_t>(a)];
+        if (qa < first_free) {
+          known += spring.weight[static_cast<size_t>(a)] * v[static_cast<size_t>(qa)];
+          any_known = true;
+        }
+      }
+      add_spring(spring, any_known ? &known : nullptr);
+    });
+    if (first_free == 0) {
+      double mass = strand.mass_kg[0];
+      double stiffness = material.anchor_stiffness_per_kg * mass;
+      double damping =
+          2 * material.damping_ratio * std::sqrt(material.anchor_stiffness_per_kg) * mass;
+      LinearSpring linear;
+      linear.count = 1;  // the anchor's end is known
+      linear.particle[0] = 0;
+      linear.weight[0] = 1;
+      linear.stiffness = stiffness;
+      linear.damping = damping;
+      for (const StrandAnchor& anchor : anchors) {
+        Vec3 span = x[0] - anchor.position_m;
+        double length = span.norm();
+        if (!(length > 1e-12)) continue;
+        linear.direction = span / length;
+        linear.length_m = length;
+        linear.rest_length_m = anchor.rest_length_m;
+        Vec3 known = -anchor.velocity_m_s;
+        add_spring(linear, &known);
+      }
+    }
+
+    int info = solve_banded_spd(band_, rhs_, n, kBandwidth);
+    if (info != 0)
+      throw std::runtime_error("strand step: band matrix not positive definite (minor " +
+                               std::to_string(info) + ")");
+    for (int32_t q = first_free; q < count; ++q) {
+      int row0 = 3 * (q - first_free);
+      v[static_cast<size_t>(q)] =
+          Vec3(rhs_[static_cast<size_t>(row0)], rhs_[static_cast<size_t>(row0 + 1)],
+               rhs_[static_cast<size_t>(row0 + 2)]);
+    }
+  } else {
+    start_spring_energy_j_ = strand_spring_energy(strand, material, x);
+  }
+
+  // Positions, then two passes over the hair segments from the root out.
+  //  1. Strain limiting: a segment out of bounds is brought back by moving everything
+  //     beyond it (so the rest of the strand keeps its shape), the ghosts beside it by
+  //     half as much. The velocities become (x' - x) / dt: inextensibility is motion.
+  //  2. The body: each hair particle is pushed out, its segment brought back to length
+  //     and the two alternated (three rounds), with Coulomb friction on its displacement
+  //     along the surface. These moves are geometry, not motion: they leave the
+  //     velocities alone, but for the particles that touched, whose velocity relative to
+  //     the surface loses its normal part. (Counted as motion, a push out of the body
+  //     flings the rest of the strand, and hair on the shoulders never comes to rest.)
+  start_.assign(x.begin(), x.end());
+  const std::vector<Vec3>& start = start_;
+  for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
+  auto limit = [&](int32_t i, Vec3& tip_side) {
+    Vec3 span = tip_side - x[static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i)])];
+    double length = span.norm();
+    double rest = strand.hair_segment_m[static_cast<size_t>(i)];
+    double limited =
+        std::clamp(length, rest * (1 - material.max_stretch), rest * (1 + material.max_stretch));
+    if (limited != length && length > 1e-12) tip_side += span * (limited / length - 1);
+  };
+  // Moves the particles after hair particle i's segment start by `shift`, and the ghosts
+  // within the segment by the share `correction` of its tip particle's move.
+  auto move_segment = [&](int32_t i, const Vec3& correction) {
+    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+    for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q)
+      x[static_cast<size_t>(q)] += 0.5 * correction;
+  };
+  Vec3 shift = Vec3::Zero();
+  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
+    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
+    if (outer < first_free) continue;
+    Vec3& tip_side = x[static_cast<size_t>(outer)];
+    const Vec3 before = tip_side;
+    limit(i, tip_side);
+    move_segment(i, tip_side - before);
+    shift += tip_side - before;
+  }
+  limit_ghosts(strand, material, x);
+  for (int32_t q = first_free; q < count; ++q) {
+    auto k = static_cast<size_t>(q);
+    v[k] = (x[k] - start[k]) / dt_s;
+  }
+  if (!collider) return;
+
+  after_limits_.assign(x.begin(), x.end());
+  contacts_.clear();
+  shift = Vec3::Zero();
+  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
+    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
+    if (outer < first_free) continue;
+    Vec3& tip_side = x[static_cast<size_t>(outer)];
+    const Vec3 before = tip_side;
+    Contact contact{outer, Vec3::Zero(), Vec3::Zero(), 0};
+    bool touched = false;
+    for (int round = 0; round < 3; ++round) {
+      if (round > 0) limit(i, tip_side);
+      Vec3 moved = tip_side;
+      if (!collider->collide(moved, start[static_cast<size_t>(outer)], contact.normal,
+                             contact.surface_velocity_m_s))
+        break;
+      contact.moved_m += (moved - tip_side).norm();
+      tip_side = moved;
+      touched = true;
+    }
+    if (touched) {
+      // Friction on the step's displacement along the surface, relative to the body:
+      // held where it was under friction times the push, slowed by that otherwise.
+      Vec3 slide =
+          tip_side - start[static_cast<size_t>(outer)] - dt_s * contact.surface_velocity_m_s;
+      slide -= slide.dot(contact.normal) * contact.normal;
+      double length = slide.norm(), grip = friction * contact.moved_m;
+      tip_side -= length <= grip ? slide : Vec3(slide * (grip / length));
+      // Where the body and the length still disagree (a body part sweeping through the
+      // hair faster than a step resolves), the length wins: a particle left inside for
+      // a step is hidden by the body, a stretched strand is not.
+      limit(i, tip_side);
+      contacts_.push_back(contact);
+    }
+    move_segment(i, tip_side - before);
+    shift += tip_side - before;
+  }
+  if (!contacts_.empty()) limit_ghosts(strand, material, x);  // else nothing moved
+  // A particle the body's moves held back (it, or the strand before it, touched) loses
+  // the part of its velocity they opposed: it is stopped, not thrown back.
+  for (int32_t q = first_free; q < count; ++q) {
+    auto k = static_cast<size_t>(q);
+    Vec3 held = x[k] - after_limits_[k];
+    double norm = held.norm();
+    if (!(norm > 1e-12)) continue;
+    Vec3 direction = held / norm;
+    double against = v[k].dot(direction);
+    if (against < 0) v[k] -= against * direction;
+  }
+  for (const Contact& contact : contacts_) {
+    auto k = static_cast<size_t>(contact.particle);
+    Vec3 relative = (x[k] - start[k]) / dt_s - contact.surface_velocity_m_s;
+    relative -= relative.dot(contact.normal) * contact.normal;
+    v[k] = contact.surface_velocity_m_s + relative;
+  }
+}
+
+}  // namespace hair

@@ -1,0 +1,136 @@
+#pragma once
+// Time integration of one altitude mass-spring strand (Selle, Lentine and Fedkiw 2008):
+// backward Euler with every spring linearised along its direction at the start of the
+// step, which makes the step one banded SPD solve per strand (banded_cholesky.h), then
+// strain limiting of the hair segments and of the ghosts' edges. The solve is stable
+// whatever the stiffness and the time step as a linear system; the strain limiting keeps
+// what its linearisation misses (motion across the springs) bounded
+// (tests/unit/test_simulation_stress.cpp).
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "hair/sim/altitude_strand.h"
+
+namespace hair {
+
+/// Spring stiffnesses per kilogram (k / m, in 1/s^2: the squared angular frequency of a
+/// particle on the spring), so that a strand behaves the same however finely it is
+/// sampled and whatever it weighs; each spring's stiffness is this times the mean mass
+/// of its particles.
+struct StrandMaterial {
+  double edge_stiffness_per_kg = 4e6;      ///< 1/s^2, stretch
+  double bend_stiffness_per_kg = 4e6;      ///< 1/s^2, springs q_k - q_k+2
+  double torsion_stiffness_per_kg = 2e6;   ///< 1/s^2, springs q_k - q_k+3
+  double altitude_stiffness_per_kg = 4e6;  ///< 1/s^2, one altitude per tetrahedron
+  double anchor_stiffness_per_kg = 4e5;    ///< 1/s^2, springs from a wisp to its anchors
+  double damping_ratio = 0.3;              ///< of each spring, a fraction of critical
+  double drag_per_s = 2.0;                 ///< air drag, velocity lost per second
+  double max_stretch = 0.01;               ///< hair segments kept within this strain
+};
+
+/// Positions and velocities of a strand's particles (its whole sequence, ghosts too).
+struct StrandState {
+  std::vector<Eigen::Vector3d> position_m;
+  std::vector<Eigen::Vector3d> velocity_m_s;
+};
+
+/// A spring from a point moved by the head (the end of a hair that leads into a braid)
+/// to particle 0 of a wisp's centre strand.
+struct StrandAnchor {
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();    ///< at the start of the step
+  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();  ///< over the step
+  double rest_length_m = 0;
+};
+
+/// The elastic energy of the strand's springs at `position_m`: sum of k (l - L)^2 / 2
+/// over two-particle springs, the altitude of each tetrahedron (the most robust one)
+/// and the anchors, joules: strand_spring_energy() + anchor_elastic_energy().
+double strand_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Eigen::Vector3d>& position_m,
+                             const std::vector<StrandAnchor>& anchors);
+
+/// The part of strand_elastic_energy() in the strand's own springs (anchors excluded),
+/// joules; what StrandStepper::start_spring_energy_j() reports of a step's start.
+double strand_spring_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                            const std::vector<Eigen::Vector3d>& position_m);
+
+/// The part of strand_elastic_energy() in the springs to the anchors, joules.
+double anchor_elastic_energy(const AltitudeStrand& strand, const StrandMaterial& material,
+                             const std::vector<Eigen::Vector3d>& position_m,
+                             const std::vector<StrandAnchor>& anchors);
+
+/// Keeps particles out of a body: called for each hair particle, root to tip, as the
+/// strand's segments are brought back to length, so that the rest of the strand follows
+/// a particle that a collision moved.
+class StrandCollider {
+ public:
+  virtual ~StrandCollider() = default;
+  /// Moves `position_m` out of the body if it is inside (or nearer than a clearance);
+  /// returns whether it did, with the outward unit normal and the velocity of the body's
+  /// surface there. `start_m` is where the particle was at the start of the step (outside),
+  /// for a particle that went too deep to find its way out.
+  virtual bool collide(Eigen::Vector3d& position_m, const Eigen::Vector3d& start_m,
+                       Eigen::Vector3d& normal, Eigen::Vector3d& surface_velocity_m_s) const = 0;
+};
+
+/// Advances strands by one time step. Holds the band matrix between calls, so one per
+/// thread, reused, allocates nothing once warm.
+class StrandStepper {
+ public:
+  /// One step of dt_s. On entry `state` holds the positions at the start of the step and
+  /// the velocities; the kinematic particles' velocities must already be those that take
+  /// them where the head puts them at the end of the step. `acceleration_m_s2` is added to
+  /// every particle's (gravity, hair-hair repulsion; size particle_count(), or empty for
+  /// `uniform_acceleration_m_s2` alone). Each step:
+  ///   (M + dt sum_s (c_s + dt k_s) J_s^T J_s) v' = M v + dt f_ext - dt sum_s k_s (l_s - L_s) J_s^T
+  ///   x' = x + dt v'
+  /// where J_s is spring s's length as a linear form of the positions along its current
+  /// direction (two-particle springs, the altitude of each tetrahedron with the most
+  /// robust normal, the anchors) and c_s its damping. Then hair segments longer or
+  /// shorter than max_stretch allows are brought back, from the root out, moving the
+  /// particle farther from the root and everything beyond it; each free ghost is brought
+  /// to within max_stretch of its rest distances from its two hair neighbours, keeping
+  /// its angle about their segment (the linearised springs alone let ghosts slide across
+  /// them, and under fast head motion drift far off the strand); and the velocities
+  /// become (x' - x) / dt. Then, with `collider`, each hair particle is pushed out of the body,
+  /// alternating with its segment's length limit, and keeps its step's displacement along
+  /// the surface (relative to the body) only beyond `friction` times the push, less that
+  /// (Coulomb friction on positions, so hair lying on the body comes to rest); the rest
+  /// of the strand follows, and the ghosts are limited again. These moves add no velocity: a
+  /// particle they moved loses the part of its velocity against the move, and one that touched the
+  /// body the normal part of its velocity relative to the surface. Throws std::runtime_error if the
+  /// band matrix is not positive definite (it always is for positive masses and time step).
+  void step(const AltitudeStrand& strand, const StrandMaterial& material,
+            const std::vector<Eigen::Vector3d>& acceleration_m_s2,
+            const Eigen::Vector3d& uniform_acceleration_m_s2,
+            const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state,
+            const StrandCollider* collider = nullptr, double friction = 0);
+
+  /// strand_spring_energy() at the positions the last step() started from, bit for bit:
+  /// the step evaluates every spring there, so the energy costs it one multiply-add per
+  /// spring (a simulation reads a frame's end state's energy off the next frame's first
+  /// step instead of evaluating the springs again).
+  double start_spring_energy_j() const { return start_spring_energy_j_; }
+
+ private:
+  double start_spring_energy_j_ = 0;
+  std::vector<double> band_;  ///< LAPACK upper band storage, column-major
+  std::vector<double> rhs_;
+  std::vector<Eigen::Vector3d> start_;         ///< positions at the start of the step
+  std::vector<Eigen::Vector3d> after_limits_;  ///< positions after the strain limiting
+  /// Contacts of this step: particle, normal, surface velocity, distance moved.
+  struct Contact {
+    int32_t particle;
+    Eigen::Vector3d normal, surface_velocity_m_s;
+    double moved_m;
+  };
+  std::vector<Contact> contacts_;
+};
+
+/// Spring (the hair segment from hair particle i to i + 1) strain: |x_i+1 - x_i| / L_i - 1,
+/// the largest over the strand's hair segments in absolute value, signed.
+double max_hair_strain(const AltitudeStrand& strand,
+                       const std::vector<Eigen::Vector3d>& position_m);
+
+}  // namespace hair

@@ -1,0 +1,45 @@
+#include "hair/style/cluster_styles.h"
+
+#include "hair/core/error.h"
+
+namespace hair {
+
+ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
+                             StyleClassifierKind classifier) {
+  const Eigen::MatrixXd& rows = feature_set_rows(features, model.feature_set);
+  if (model.feature_names != feature_set_names(model.feature_set))
+    throw Error::usage("the style model's '" + model.feature_set +
+                       "' features are not the ones classify measures under that name");
+  const auto cluster_count = static_cast<Eigen::Index>(features.strand_count.size());
+  const auto class_count = static_cast<Eigen::Index>(model.class_labels.size());
+  ClusterStyles result;
+  result.classifier = classifier;
+  result.classes = model.class_labels;
+  result.style.assign(static_cast<size_t>(cluster_count), -1);
+  result.svm_style = result.style;
+  result.forest_style = result.style;
+  result.svm_decision_values =
+      Eigen::MatrixXd::Zero(cluster_count, class_count * (class_count - 1) / 2);
+  result.svm_votes = Eigen::MatrixXi::Zero(cluster_count, class_count);
+  result.forest_vote_fraction = Eigen::MatrixXd::Zero(cluster_count, class_count);
+  for (Eigen::Index c = 0; c < cluster_count; ++c) {
+    if (features.strand_count[static_cast<size_t>(c)] == 0) continue;
+    Eigen::RowVectorXd row = rows.row(c);
+    StylePrediction prediction =
+        style_prediction(model, std::span<const double>(row.data(), row.size()));
+    auto i = static_cast<size_t>(c);
+    result.svm_style[i] = static_cast<int8_t>(prediction.svm_label);
+    result.forest_style[i] = static_cast<int8_t>(prediction.forest_label);
+    result.style[i] =
+        classifier == StyleClassifierKind::svm ? result.svm_style[i] : result.forest_style[i];
+    for (Eigen::Index p = 0; p < result.svm_decision_values.cols(); ++p)
+      result.svm_decision_values(c, p) = prediction.svm_decision_values[static_cast<size_t>(p)];
+    for (Eigen::Index k = 0; k < class_count; ++k) {
+      result.svm_votes(c, k) = prediction.svm_votes[static_cast<size_t>(k)];
+      result.forest_vote_fraction(c, k) = prediction.forest_vote_fraction[static_cast<size_t>(k)];
+    }
+  }
+  return result;
+}
+
+}  // namespace hair

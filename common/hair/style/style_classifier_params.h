@@ -1,0 +1,43 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "hair/style/puk_svm_grid_search.h"
+#include "hair/style/random_forest.h"
+
+namespace hair {
+
+/// The two classifiers of the paper (section 5.1).
+enum class StyleClassifierKind : int8_t {
+  svm = 0,            ///< support vector machine with the PUK kernel
+  random_forest = 1,  ///< random forest
+};
+
+/// "svm" or "random_forest" ("unknown" outside the enumeration).
+const char* style_classifier_name(StyleClassifierKind kind);
+/// The kind named by one of style_classifier_name()'s words; nullopt for any other text.
+std::optional<StyleClassifierKind> style_classifier_from_name(std::string_view name);
+
+/// Settings of the style classifiers' cross-validation and training.
+struct StyleClassifierParams {
+  /// Folds of the cross-validation that measures the classifiers (the paper: ten).
+  int folds = 10;
+  /// Folds of the grid search for the SVM's sigma, omega and C, run on each training set
+  /// of the cross-validation, and on all rows for the final model (>= 2).
+  int inner_folds = 5;
+  /// Seed of the fold assignments (stratified_folds): the outer folds use it, the grid
+  /// search inside outer fold f uses seed + 1 + f, that of the final model seed + 1 + folds.
+  uint64_t seed = 1;
+  PukSvmGrid svm_grid;
+  RandomForestParams forest;
+  /// The classifier whose class a trained model reports as the style. The random forest:
+  /// the more accurate of the two in the paper (86.7% against 84.8%).
+  StyleClassifierKind default_classifier = StyleClassifierKind::random_forest;
+
+  /// Throws hair::Error (usage) naming the first bad setting and its value.
+  void check() const;
+};
+
+}  // namespace hair

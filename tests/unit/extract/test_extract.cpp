@@ -1,0 +1,241 @@
+// extract_strands on hand-made hair with known roots: every strand must run root to tip
+// whatever the vertex order, triangulation or texture, and the rule used is recorded.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include "hair/extract/extract.h"
+#include "unit/synthetic_hair.h"
+
+namespace hair {
+namespace {
+
+using testing::falling_polyline;
+using testing::hair_strip;
+using testing::head_point;
+using testing::snowman_body;
+using testing::StripOptions;
+
+/// Distance from a point to the snowman's head sphere.
+double head_distance(const Eigen::Vector3f& p) {
+  return std::abs((p.cast<double>() - Eigen::Vector3d(0, 1.6, 0)).norm() - 0.1);
+}
+
+/// Strips hanging from the head all around, each built a different way.
+struct HangingHair {
+  PolyMesh mesh;
+  std::vector<std::string> labels;  ///< per patch
+};
+
+HangingHair hanging_hair() {
+  HangingHair hair;
+  std::vector<std::pair<std::string, StripOptions>> variants = {
+      {"ordered", {}},
+      {"reversed", {.reverse_order = true}},
+      {"shuffled", {.shuffle_order = true, .seed = 3}},
+      {"shuffled without uv", {.shuffle_order = true, .with_uv = false, .seed = 4}},
+      {"reversed without uv", {.reverse_order = true, .with_uv = false}},
+      {"triangulated", {.triangulate = true}},
+      {"triangulated and shuffled", {.shuffle_order = true, .triangulate = true, .seed = 5}},
+      {"four rails", {.rails = 4}},
+      {"single quad", {.segments = 1}},
+      {"single quad reversed", {.segments = 1, .reverse_order = true}},
+      {"long grid", {.rails = 6, .segments = 30}},
+      {"long grid shuffled", {.rails = 6, .segments = 30, .shuffle_order = true, .seed = 6}},
+  };
+  for (size_t i = 0; i < variants.size(); ++i) {
+    double azimuth =
+        2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(variants.size());
+    Eigen::Vector3d root = head_point(azimuth, 1.0);
+    Eigen::Vector3d outward = (root - Eigen::Vector3d(0, 1.6, 0)).normalized();
+    Eigen::Vector3d across = outward.cross(Eigen::Vector3d::UnitY()).normalized();
+    const StripOptions& options = variants[i].second;
+    double length = options.segments == 1 ? 0.08 : 0.3;
+    auto centre = falling_polyline(root, outward, length, options.segments, 0.5 * length);
+    testing::append_mesh(hair.mesh, hair_strip(centre, across, 0.03, options));
+    hair.labels.push_back(variants[i].first);
+  }
+  return hair;
+}
+
+TEST(ExtractStrands, EveryStrandOfHangingStripsRunsRootToTip) {
+  HangingHair hair = hanging_hair();
+  ExtractResult result = extract_strands(hair.mesh, snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(result.group_count(), static_cast<int32_t>(hair.labels.size()));
+  for (int32_t g = 0; g < result.group_count(); ++g) {
+    ASSERT_GE(result.group_first_strand[g + 1] - result.group_first_strand[g], 2) << hair.labels[g];
+    for (int32_t s = result.group_first_strand[g]; s < result.group_first_strand[g + 1]; ++s) {
+      auto strand = result.strands.strand(s);
+      EXPECT_LT(head_distance(strand.row(0).transpose()), 0.01) << hair.labels[g];
+      EXPECT_GT(head_distance(strand.row(strand.rows() - 1).transpose()), 0.04) << hair.labels[g];
+    }
+  }
+}
+
+TEST(ExtractStrands, RecordsWhichRuleDecidedEachGroup) {
+  HangingHair hair = hanging_hair();
+  ExtractResult result = extract_strands(hair.mesh, snowman_body(), {}, "hair", "body");
+  for (int32_t g = 0; g < result.group_count(); ++g) {
+    const std::string& label = hair.labels[g];
+    OrientationRule rule = result.group_rule[g];
+    if (label == "ordered" || label == "four rails" || label == "long grid") {
+      EXPECT_EQ(rule, OrientationRule::vertex_order) << label;
+    }
+    // Reversed ids are contradicted by the head distance, which then decides.
+    if (label == "reversed" || label == "long grid shuffled") {
+      EXPECT_EQ(rule, OrientationRule::scalp_distance) << label;
+    }
+    EXPECT_GE(result.group_confidence[g], 0.0f);
+    EXPECT_LE(result.group_confidence[g], 1.0f);
+  }
+  EXPECT_EQ(result.stats.groups_by_rule[static_cast<size_t>(OrientationRule::height)], 0);
+}
+
+TEST(ExtractStrands, TriangulatedStripsArePairedBackIntoQuads) {
+  HangingHair hair = hanging_hair();
+  ExtractResult result = extract_strands(hair.mesh, snowman_body(), {}, "hair", "body");
+  EXPECT_GT(result.stats.triangles_paired, 0);
+  EXPECT_EQ(result.stats.triangles_left, 0);
+  for (int32_t g = 0; g < result.group_count(); ++g)
+    if (hair.labels[g].starts_with("triangulated")) {
+      EXPECT_EQ(result.group_first_strand[g + 1] - result.group_first_strand[g], 2);  // two rails
+      EXPECT_EQ(result.strands.strand_size(result.group_first_strand[g]), 11);
+    }
+}
+
+TEST(ExtractStrands, StrandsKeepTheirSourceVerticesAndGroups) {
+  HangingHair hair = hanging_hair();
+  ExtractResult result = extract_strands(hair.mesh, snowman_body(), {}, "hair", "body");
+  const auto& source =
+      std::get<std::vector<int32_t>>(result.strands.point_attributes.at("source_vertex"));
+  const auto& group = std::get<std::vector<int32_t>>(result.strands.strand_attributes.at("group"));
+  for (int64_t i = 0; i < result.strands.point_count(); ++i)
+    ASSERT_TRUE(result.strands.points.row(i).isApprox(result.hair_mesh.vertices.row(source[i])));
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s)
+    EXPECT_TRUE(s >= result.group_first_strand[group[s]] &&
+                s < result.group_first_strand[group[s] + 1]);
+}
+
+TEST(ExtractStrands, CardDrapedOverTheCrownIsPartedAtItsTop) {
+  // From the left shoulder up over the crown and down to the right shoulder.
+  std::vector<Eigen::Vector3d> centre;
+  for (int i = 0; i <= 40; ++i) {
+    double t = i / 40.0;
+    double polar = std::numbers::pi * (t - 0.5) * 1.1;  // -99 to +99 degrees over the top
+    Eigen::Vector3d on_head(0.108 * std::sin(polar), 1.6 + 0.108 * std::cos(polar), 0);
+    if (std::abs(polar) > std::numbers::pi / 2)
+      on_head.y() -= 0.3 * (std::abs(polar) - std::numbers::pi / 2);
+    centre.push_back(on_head);
+  }
+  // Hang the ends well off the head.
+  centre.front() += Eigen::Vector3d(-0.05, -0.15, 0);
+  centre.back() += Eigen::Vector3d(0.05, -0.15, 0);
+  PolyMesh card = hair_strip(centre, Eigen::Vector3d::UnitZ(), 0.04, {.shuffle_order = true});
+  ExtractResult result = extract_strands(card, snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(result.group_count(), 1);
+  EXPECT_EQ(result.group_rule[0], OrientationRule::parting);
+  ASSERT_EQ(result.strands.strand_count(), 4);
+  for (int64_t s = 0; s < 4; ++s) {
+    auto strand = result.strands.strand(s);
+    EXPECT_GT(strand(0, 1), 1.69f);                 // starts at the crown
+    EXPECT_LT(strand(strand.rows() - 1, 1), 1.5f);  // ends hanging low
+  }
+}
+
+TEST(ExtractStrands, CapRunsIntoTheTailThatContinuesIt) {
+  // A ponytail: cap rails on the head from the forehead over the top to a band at the
+  // back that sits higher than the forehead, and a tail hanging from the band. Height
+  // alone would take the band for the root; the tail starting there says otherwise.
+  Eigen::Vector3d band = head_point(-std::numbers::pi / 2, 0.9);
+  std::vector<Eigen::Vector3d> cap_centre;
+  for (int i = 0; i <= 20; ++i) {
+    double polar = -1.3 + (0.9 + 1.3) * i / 20.0;  // front (z>0) over the top to the back
+    cap_centre.push_back({0, 1.6 + 0.105 * std::cos(polar), 0.105 * std::sin(-polar)});
+  }
+  cap_centre.back() = band;
+  PolyMesh mesh = hair_strip(cap_centre, Eigen::Vector3d::UnitX(), 0.05,
+                             {.rails = 5, .segments = 20, .shuffle_order = true, .with_uv = false});
+  auto tail =
+      falling_polyline(band + Eigen::Vector3d(0, 0, -0.003), Eigen::Vector3d(0, -1, -0.6), 0.3, 12);
+  testing::append_mesh(mesh, hair_strip(tail, Eigen::Vector3d::UnitX(), 0.03,
+                                        {.rails = 3, .segments = 12, .with_uv = false}));
+  ExtractResult result = extract_strands(mesh, snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(result.group_count(), 2);
+  EXPECT_EQ(result.group_rule[0], OrientationRule::continuation);
+  for (int32_t s = result.group_first_strand[0]; s < result.group_first_strand[1]; ++s) {
+    auto strand = result.strands.strand(s);
+    EXPECT_GT(strand(0, 2), 0.05f);                   // root at the front
+    EXPECT_LT(strand(strand.rows() - 1, 2), -0.05f);  // tip at the band, behind
+  }
+}
+
+TEST(ExtractStrands, MeasuresTheHeadAndMarksTheScalp) {
+  ExtractResult result = extract_strands(hanging_hair().mesh, snowman_body(), {}, "hair", "body");
+  EXPECT_NEAR(result.head.head_top_y, 1.7, 0.01);
+  EXPECT_GE(result.head.neck_y, 1.39);
+  EXPECT_LE(result.head.neck_y, 1.57);
+  int64_t scalp = 0;
+  for (Eigen::Index t = 0; t < result.body_triangles.rows(); ++t) {
+    if (!result.scalp_triangle[t]) continue;
+    ++scalp;
+    Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+    for (int k = 0; k < 3; ++k)
+      centroid += result.body_vertices.row(result.body_triangles(t, k)).transpose() / 3;
+    EXPECT_GE(centroid.y(), result.head.neck_y);  // on the head
+  }
+  EXPECT_GT(scalp, 0);
+}
+
+TEST(ExtractStrands, UnitScaleConvertsToMetresAndHeadHeightCanBeGiven) {
+  PolyMesh hair = hanging_hair().mesh, body = snowman_body();
+  hair.vertices *= 10.0f;  // decimetres
+  body.vertices *= 10.0f;
+  ExtractParams params;
+  params.unit_scale = 0.1;
+  ExtractResult result = extract_strands(hair, body, params, "hair", "body");
+  EXPECT_NEAR(result.head.head_top_y, 1.7, 0.01);
+  EXPECT_LT(result.strands.points.cwiseAbs().maxCoeff(), 2.0f);
+  params.head_height_m = 0.2;
+  result = extract_strands(hair, body, params, "hair", "body");
+  EXPECT_DOUBLE_EQ(result.head.head_height, 0.2);
+  EXPECT_NEAR(result.head.neck_y, result.head.head_top_y - 0.2, 1e-9);
+}
+
+TEST(ExtractStrands, SameResultForAnyThreadCountAndRun) {
+  HangingHair hair = hanging_hair();
+  int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  ExtractResult one = extract_strands(hair.mesh, snowman_body(), {}, "hair", "body");
+  omp_set_num_threads(std::max(2, threads));
+  ExtractResult many = extract_strands(hair.mesh, snowman_body(), {}, "hair", "body");
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.strands.offsets, many.strands.offsets);
+  EXPECT_TRUE(one.strands.points == many.strands.points);
+  EXPECT_EQ(one.group_rule, many.group_rule);
+  EXPECT_EQ(one.group_confidence, many.group_confidence);
+  EXPECT_EQ(one.scalp_triangle, many.scalp_triangle);
+}
+
+TEST(ExtractStrands, PatchWithoutQuadsGivesOneStrandAlongItsAxis) {
+  // A fan of triangles around a root vertex: no pairs form quads at right angles.
+  PolyMesh fan;
+  fan.vertices.resize(7, 3);
+  Eigen::Vector3d root = head_point(0.3, 1.2);
+  fan.vertices.row(0) = root.cast<float>().transpose();
+  for (int i = 1; i < 7; ++i)
+    fan.vertices.row(i) =
+        (root + Eigen::Vector3d(0.01 * std::cos(i), -0.05 * i, 0.01 * std::sin(i)))
+            .cast<float>()
+            .transpose();
+  for (int32_t i = 1; i < 6; ++i) fan.append_face(std::vector<int32_t>{0, i, i + 1});
+  ExtractParams params;
+  params.max_quad_corner_deviation_deg = 5;
+  ExtractResult result = extract_strands(fan, snowman_body(), params, "hair", "body");
+  ASSERT_EQ(result.group_count(), 1);
+  EXPECT_EQ(result.group_kind[0], PatchKind::triangle_soup);
+  ASSERT_EQ(result.strands.strand_count(), 1);
+  auto strand = result.strands.strand(0);
+  EXPECT_GT(strand(0, 1), strand(strand.rows() - 1, 1));  // from the head down
+}
+
+}  // namespace
+}  // namespace hair

@@ -1,0 +1,714 @@
+// grow_strands() on a hand-made head with known answers: a sphere with a scalp cap and
+// four cards of parallel rails lying on it (root-type groups), one of them continued by
+// a middle group and a tip group hanging below it. Roots on the scalp, nothing inside the
+// body, strands under the continued card reaching the tip, the others ending with their
+// card, clusters from the nearest root-type strand; points pushed out of the body where
+// input strands run through it; determinism over thread counts and seeds; refused
+// inputs; a scene without root-type groups.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "hair/core/error.h"
+#include "hair/geom/triangle_mesh_distance.h"
+#include "hair/grow/strand_growing.h"
+#include "unit/icosphere.h"
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+constexpr double kRadius = 0.1;  // of the head sphere, metres
+const Vec3 kCentre(0, 1.5, 0);
+const Vec3 kUp = Vec3::UnitY();
+constexpr double kScalpAboveCentre = 0.05;  // scalp: triangle centres higher than this
+constexpr double kHeadHeight = 0.24;
+constexpr int kCardCount = 4;
+constexpr double kCardOffset = 0.004;  // rails lie this far outside the sphere
+constexpr double kRailSpacing = 0.006;
+constexpr int kRailsPerCard = 5;
+constexpr double kOuterRail = kRailSpacing * (kRailsPerCard - 1) / 2;  // from the card's middle
+constexpr double kCardFirstDeg = 20, kCardLastDeg = 110;  // polar angles of a rail's ends
+constexpr int kRailPoints = 37;                           // 2.5 degrees (about 4.5 mm) apart
+// Between the continued card, the middle and the tip: 2.5 steps (step_h H), within
+// continue_radius_h H (19 mm) of a strand that stops a few millimetres short of the card's
+// end.
+constexpr double kGap = 0.012;
+constexpr double kMiddleLength = 0.12, kTipLength = 0.08;
+constexpr double kInputStep = 0.005;  // spacing of the straight input strands' points
+constexpr int kStrandCount = 400;
+// Groups: cards 0-3 (card 0 continued), then the middle and the tip.
+constexpr int32_t kContinuedCard = 0, kMiddleGroup = 4, kTipGroup = 5;
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180; }
+
+/// A sphere of kRadius about kCentre (tests/unit/icosphere.h), wound counter-clockwise
+/// seen from outside.
+void icosphere(int subdivisions, Points3f& vertices, Triangles3i& triangles) {
+  testing::SphereMesh mesh = testing::icosphere(subdivisions, kRadius, kCentre);
+  vertices = std::move(mesh.vertices);
+  triangles = std::move(mesh.triangles);
+}
+
+Vec3 point_of(const Points3f& points, int64_t row) {
+  return points.row(row).cast<double>().transpose();
+}
+
+Vec3 corner(const GrowInput& input, Eigen::Index t, int k) {
+  return point_of(input.body_vertices, input.body_triangles(t, k));
+}
+
+/// Scalp flags on the body triangles whose centre satisfies `flagged`.
+template <class Predicate>
+std::vector<uint8_t> flags_where(const GrowInput& input, Predicate flagged) {
+  std::vector<uint8_t> flags(static_cast<size_t>(input.body_triangles.rows()), 0);
+  for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
+    Vec3 centre = (corner(input, t, 0) + corner(input, t, 1) + corner(input, t, 2)) / 3;
+    flags[static_cast<size_t>(t)] = flagged(centre) ? 1 : 0;
+  }
+  return flags;
+}
+
+/// A straight input strand from `start` along the unit `direction` for `length` metres.
+Points3f straight_rail(const Vec3& start, const Vec3& direction, double length) {
+  int count = static_cast<int>(std::round(length / kInputStep)) + 1;
+  Points3f points(count, 3);
+  for (int i = 0; i < count; ++i)
+    points.row(i) = (start + (length * i / (count - 1)) * direction).transpose().cast<float>();
+  return points;
+}
+
+/// A card's frame: `out` horizontal, away from the vertical axis through the centre;
+/// `side` horizontal, across the card.
+struct CardFrame {
+  Vec3 out, side;
+};
+
+CardFrame card_frame(int card) {
+  double azimuth = radians(90.0 * card);
+  Vec3 out(std::cos(azimuth), 0, std::sin(azimuth));
+  return {out, kUp.cross(out)};
+}
+
+/// Polar angle (from +y) of `p` about the centre, in the plane of `card`.
+double polar_in_card(int card, const Vec3& p) {
+  Vec3 d = p - kCentre;
+  return std::atan2(d.dot(card_frame(card).out), d.y());
+}
+
+/// Distance of `p` across `card` from its middle plane.
+double lateral_in_card(int card, const Vec3& p) { return (p - kCentre).dot(card_frame(card).side); }
+
+/// Whether `root` lies under `card` proper: below its rails' first points, and across the
+/// card no farther than half a rail spacing beyond its outer rails. The scalp that roots
+/// take reaches up to scalp_cover_h H (12 mm) beyond the rails, where the card's strands
+/// are farther from a root than its own rails are from each other.
+bool under_card(int card, const Vec3& root) {
+  return polar_in_card(card, root) >= radians(kCardFirstDeg) &&
+         std::abs(lateral_in_card(card, root)) <= kOuterRail + kRailSpacing / 2;
+}
+
+/// The scene: cards at azimuths 0 (+x), 90, 180 and 270 degrees about the vertical axis,
+/// each a sheet of kRailsPerCard parallel rails kRailSpacing apart, every rail a vertical
+/// arc kCardOffset outside the sphere from polar angle kCardFirstDeg (over the scalp) down
+/// to kCardLastDeg (below the equator), root first. The middle group hangs straight down
+/// from kGap below card 0's rail ends, the tip group from kGap below the middle's. Cards
+/// 0-2 are in cluster 0, card 3 in cluster 2 (so that the roots' clusters differ), the
+/// middle and the tip in cluster 1. The scalp is the cap above kScalpAboveCentre.
+struct Scene {
+  GrowInput input;
+  std::vector<Vec3> continued_rail_ends;  ///< last points of card 0's rails
+  std::vector<Vec3> tip_ends;             ///< last points of the tip group's strands
+};
+
+Scene make_scene(bool with_root_types = true, double middle_inset = 0, double gap = kGap) {
+  Scene scene;
+  GrowInput& input = scene.input;
+  icosphere(4, input.body_vertices, input.body_triangles);  // 5120 triangles, edges ~7 mm
+  input.scalp_triangle =
+      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
+  input.head_height_m = kHeadHeight;
+  input.source = "sphere";
+
+  std::vector<Points3f> polylines;
+  std::vector<int32_t> strand_group;
+  for (int card = 0; card < kCardCount; ++card) {
+    CardFrame frame = card_frame(card);
+    for (int k = 0; k < kRailsPerCard; ++k) {
+      // In the plane `lateral` off the card's middle, the circle kCardOffset outside
+      // the sphere.
+      double lateral = kRailSpacing * k - kOuterRail;
+      double rho = std::sqrt(std::pow(kRadius + kCardOffset, 2) - lateral * lateral);
+      Points3f rail(kRailPoints, 3);
+      for (int i = 0; i < kRailPoints; ++i) {
+        double polar =
+            radians(kCardFirstDeg + (kCardLastDeg - kCardFirstDeg) * i / (kRailPoints - 1));
+        Vec3 p = kCentre + rho * (std::sin(polar) * frame.out + std::cos(polar) * kUp) +
+                 lateral * frame.side;
+        rail.row(i) = p.transpose().cast<float>();
+      }
+      if (card == kContinuedCard)
+        scene.continued_rail_ends.push_back(point_of(rail, kRailPoints - 1));
+      polylines.push_back(rail);
+      strand_group.push_back(card);
+    }
+  }
+  // The middle and the tip, `middle_inset` nearer the vertical axis than the card's end.
+  const Vec3 inset = -middle_inset * card_frame(kContinuedCard).out;
+  for (const Vec3& end : scene.continued_rail_ends) {
+    polylines.push_back(straight_rail(end + inset - gap * kUp, -kUp, kMiddleLength));
+    strand_group.push_back(kMiddleGroup);
+  }
+  for (const Vec3& end : scene.continued_rail_ends) {
+    Vec3 start = end + inset - (gap + kGap + kMiddleLength) * kUp;
+    polylines.push_back(straight_rail(start, -kUp, kTipLength));
+    strand_group.push_back(kTipGroup);
+    scene.tip_ends.push_back(start - kTipLength * kUp);
+  }
+
+  input.input_strands = strand_set_from_polylines(polylines);
+  input.input_strands.strand_attributes["group"] = strand_group;
+  if (with_root_types)
+    input.group_type = {GroupType::root_connected, GroupType::root_free, GroupType::root_free,
+                        GroupType::root_free,      GroupType::middle,    GroupType::tip};
+  else
+    input.group_type.assign(6, GroupType::middle);
+  input.group_cluster = {0, 0, 0, 2, 1, 1};
+  return scene;
+}
+
+GrowParams params_with(int strand_count, int seed = 1) {
+  GrowParams params;
+  params.strand_count = strand_count;
+  params.seed = seed;
+  return params;
+}
+
+double strand_length(const StrandSet& strands, int64_t s) {
+  double length = 0;
+  for (int64_t row = strands.offsets[s]; row + 1 < strands.offsets[s + 1]; ++row)
+    length += (point_of(strands.points, row + 1) - point_of(strands.points, row)).norm();
+  return length;
+}
+
+Vec3 root_of(const StrandSet& strands, int64_t s) {
+  return point_of(strands.points, strands.offsets[s]);
+}
+Vec3 last_of(const StrandSet& strands, int64_t s) {
+  return point_of(strands.points, strands.offsets[s + 1] - 1);
+}
+
+/// Group of the input-strand point nearest `p` (brute force), among the groups whose
+/// type passes `eligible`.
+template <class Eligible>
+int32_t nearest_group(const GrowInput& input, const Vec3& p, Eligible eligible) {
+  const StrandSet& strands = input.input_strands;
+  const auto& group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
+  double best = std::numeric_limits<double>::infinity();
+  int32_t nearest = -1;
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    int32_t g = group[static_cast<size_t>(s)];
+    if (!eligible(input.group_type[static_cast<size_t>(g)])) continue;
+    for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row) {
+      double distance = (point_of(strands.points, row) - p).norm();
+      if (distance < best) {
+        best = distance;
+        nearest = g;
+      }
+    }
+  }
+  return nearest;
+}
+
+int32_t nearest_root_type_group(const GrowInput& input, const Vec3& p) {
+  return nearest_group(input, p, [](GroupType type) {
+    return type == GroupType::root_free || type == GroupType::root_connected;
+  });
+}
+
+/// The rules of strand `s`'s points.
+std::vector<GrowRule> rules_of(const GrowResult& result, int64_t s) {
+  return {result.point_rule.begin() + result.strands.offsets[s],
+          result.point_rule.begin() + result.strands.offsets[s + 1]};
+}
+
+int64_t count_rule(const std::vector<GrowRule>& rules, GrowRule rule) {
+  return std::count(rules.begin(), rules.end(), rule);
+}
+
+const std::vector<int32_t>& int_attribute(const StrandSet& strands, const std::string& name) {
+  return std::get<std::vector<int32_t>>(strands.strand_attributes.at(name));
+}
+
+/// Whether two results hold the same strands, rules and attributes, bit for bit.
+bool identical(const GrowResult& a, const GrowResult& b) {
+  return a.strands.offsets == b.strands.offsets && a.strands.points == b.strands.points &&
+         a.point_rule == b.point_rule &&
+         int_attribute(a.strands, "cluster") == int_attribute(b.strands, "cluster") &&
+         int_attribute(a.strands, "root_triangle") == int_attribute(b.strands, "root_triangle") &&
+         std::get<Points3f>(a.strands.strand_attributes.at("root_normal")) ==
+             std::get<Points3f>(b.strands.strand_attributes.at("root_normal")) &&
+         a.points_pushed_out == b.points_pushed_out;
+}
+
+/// The scene grown once with kStrandCount strands, shared by the tests that only look.
+class GrowOnSphere : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scene_ = new Scene(make_scene());
+    result_ = new GrowResult(grow_strands(scene_->input, params_with(kStrandCount)));
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete scene_;
+    result_ = nullptr;
+    scene_ = nullptr;
+  }
+  static const GrowInput& input() { return scene_->input; }
+  static const StrandSet& grown() { return result_->strands; }
+
+  static Scene* scene_;
+  static GrowResult* result_;
+};
+Scene* GrowOnSphere::scene_ = nullptr;
+GrowResult* GrowOnSphere::result_ = nullptr;
+
+TEST_F(GrowOnSphere, GrowsTheRequestedStrandsEachFromOneRoot) {
+  ASSERT_EQ(grown().strand_count(), kStrandCount);
+  ASSERT_EQ(static_cast<int64_t>(result_->point_rule.size()), grown().point_count());
+  EXPECT_NO_THROW(check_strand_set(grown()));  // polylines of 2+ finite points
+  const int max_points = GrowParams{}.max_points_per_strand;
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    std::vector<GrowRule> rules = rules_of(*result_, s);
+    EXPECT_EQ(rules.front(), GrowRule::root) << "strand " << s;
+    EXPECT_EQ(count_rule(rules, GrowRule::root), 1) << "strand " << s;
+    // Every step moves on (no strand stalls until it runs out of points).
+    EXPECT_LT(grown().strand_size(s), max_points) << "strand " << s;
+    for (int64_t row = grown().offsets[s] + 1; row < grown().offsets[s + 1]; ++row)
+      ASSERT_GT((point_of(grown().points, row) - point_of(grown().points, row - 1)).norm(), 1e-4)
+          << "strand " << s << ", point " << row - grown().offsets[s];
+  }
+  EXPECT_FALSE(result_->roots_from_any_type);
+  EXPECT_GT(result_->scalp_triangles_used, 0);
+  EXPECT_GT(result_->root_spacing_m, 0);
+  // The scalp area used lies under the cards: less than the whole cap (2 pi r h).
+  EXPECT_GT(result_->scalp_area_m2, 0);
+  EXPECT_LT(result_->scalp_area_m2, 2 * std::numbers::pi * kRadius * (kRadius - kScalpAboveCentre));
+}
+
+TEST_F(GrowOnSphere, RootsLieOnFlaggedScalpTriangles) {
+  const auto& triangle = int_attribute(grown(), "root_triangle");
+  const auto& normal = std::get<Points3f>(grown().strand_attributes.at("root_normal"));
+  ASSERT_EQ(static_cast<int64_t>(triangle.size()), grown().strand_count());
+  ASSERT_EQ(normal.rows(), grown().strand_count());
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    Vec3 root = root_of(grown(), s);
+    int32_t t = triangle[static_cast<size_t>(s)];
+    ASSERT_GE(t, 0);
+    ASSERT_LT(t, input().body_triangles.rows());
+    EXPECT_TRUE(input().scalp_triangle[static_cast<size_t>(t)]) << "strand " << s;
+    Vec3 nearest = closest_point_on_triangle(root, corner(input(), t, 0), corner(input(), t, 1),
+                                             corner(input(), t, 2));
+    EXPECT_LT((nearest - root).norm(), 1e-6) << "strand " << s << " off its root triangle";
+    // The icosphere's flat triangles sag less than 0.1 mm below the sphere.
+    EXPECT_NEAR((root - kCentre).norm(), kRadius, 5e-4) << "strand " << s;
+    Vec3 outward = (root - kCentre).normalized();
+    EXPECT_GT(normal.row(s).cast<double>().dot(outward.transpose()), 0.99) << "strand " << s;
+  }
+}
+
+TEST_F(GrowOnSphere, NoPointEntersTheBody) {
+  double deepest_m = 0;
+  int64_t inside = 0;
+  for (int64_t row = 0; row < grown().point_count(); ++row) {
+    double depth = kRadius - (point_of(grown().points, row) - kCentre).norm();
+    deepest_m = std::max(deepest_m, depth);
+    if (depth > 1e-3) ++inside;
+  }
+  std::printf("[ grow     ] sphere: %lld points, deepest %.3f mm inside, %lld pushed out\n",
+              static_cast<long long>(grown().point_count()), 1e3 * deepest_m,
+              static_cast<long long>(result_->points_pushed_out));
+  EXPECT_EQ(inside, 0) << "points more than 1 mm inside the sphere";
+}
+
+TEST_F(GrowOnSphere, EachStrandTakesTheClusterOfTheNearestRootTypeStrand) {
+  const auto& cluster = int_attribute(grown(), "cluster");
+  ASSERT_EQ(static_cast<int64_t>(cluster.size()), grown().strand_count());
+  std::vector<int64_t> per_cluster(3, 0);
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    int32_t group = nearest_root_type_group(input(), root_of(grown(), s));
+    int32_t expected = input().group_cluster[static_cast<size_t>(group)];
+    EXPECT_EQ(cluster[static_cast<size_t>(s)], expected) << "strand " << s;
+    ++per_cluster[static_cast<size_t>(expected)];
+  }
+  // Roots in both clusters of cards; none in cluster 1 (middle and tip only), so no
+  // field there.
+  EXPECT_GT(per_cluster[0], 0);
+  EXPECT_GT(per_cluster[2], 0);
+  ASSERT_EQ(result_->clusters.size(), 3u);
+  for (size_t c = 0; c < 3; ++c)
+    EXPECT_EQ(result_->clusters[c].strand_count, per_cluster[c]) << "cluster " << c;
+  EXPECT_GT(result_->clusters[0].field_voxel_count, 0);
+  EXPECT_GT(result_->clusters[2].field_voxel_count, 0);
+  EXPECT_EQ(result_->clusters[1].field_voxel_count, 0);
+}
+
+TEST_F(GrowOnSphere, StrandsUnderTheContinuedCardReachTheTip) {
+  // Roots under card 0 proper (under_card()). Those beside it or above its rails' first
+  // points are only counted: their field phase can stop short of the card's end, or
+  // leave the field beside the card, out of reach of the middle group.
+  const auto& cluster = int_attribute(grown(), "cluster");
+  double tip_end_y = scene_->tip_ends.front().y();
+  auto reaches_tip = [&](int64_t s) {
+    return std::abs(last_of(grown(), s).y() - tip_end_y) <= 0.01;
+  };
+  int64_t checked = 0, elsewhere = 0, elsewhere_reaching = 0;
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    Vec3 root = root_of(grown(), s);
+    if (nearest_root_type_group(input(), root) != kContinuedCard) continue;
+    if (!under_card(kContinuedCard, root)) {
+      ++elsewhere;
+      if (reaches_tip(s)) ++elsewhere_reaching;
+      continue;
+    }
+    ++checked;
+    // Down to the tip's end (at most a step past it), beside one of the tip strands.
+    EXPECT_TRUE(reaches_tip(s)) << "strand " << s << " ends at y " << last_of(grown(), s).y()
+                                << ", the tip at " << tip_end_y;
+    double beside = std::numeric_limits<double>::infinity();
+    for (const Vec3& end : scene_->tip_ends)
+      beside = std::min(beside, Vec3(last_of(grown(), s) - end).cwiseProduct(Vec3(1, 0, 1)).norm());
+    EXPECT_LT(beside, 0.01) << "strand " << s;
+    std::vector<GrowRule> rules = rules_of(*result_, s);
+    EXPECT_GT(count_rule(rules, GrowRule::bridge), 0) << "strand " << s;
+    EXPECT_GT(count_rule(rules, GrowRule::input_strand), 0) << "strand " << s;
+    EXPECT_EQ(cluster[static_cast<size_t>(s)], 0) << "strand " << s;  // its root's cluster
+  }
+  std::printf(
+      "[ grow     ] sphere: %lld strands under the continued card reach its tip; of %lld "
+      "rooted beside or above it, %lld do\n",
+      static_cast<long long>(checked), static_cast<long long>(elsewhere),
+      static_cast<long long>(elsewhere_reaching));
+  EXPECT_GT(checked, 20);
+  EXPECT_GT(result_->continuations_other_cluster, 0);  // card (cluster 0) into the middle (1)
+}
+
+TEST_F(GrowOnSphere, StrandsUnderOtherCardsEndWithTheirCard) {
+  // Roots under the cards proper (under_card()); the others are only counted.
+  double lowest_ratio = std::numeric_limits<double>::infinity(), highest_ratio = 0;
+  int64_t checked = 0, elsewhere = 0, elsewhere_off = 0;
+  for (int64_t s = 0; s < grown().strand_count(); ++s) {
+    Vec3 root = root_of(grown(), s);
+    int32_t card = nearest_root_type_group(input(), root);
+    if (card == kContinuedCard) continue;
+    // What remains of the card below the root: the arc from the root's polar angle to
+    // the rails' last, kCardOffset out.
+    double remaining =
+        (kRadius + kCardOffset) * (radians(kCardLastDeg) - polar_in_card(card, root));
+    double ratio = strand_length(grown(), s) / remaining;
+    if (!under_card(card, root)) {
+      ++elsewhere;
+      if (std::abs(ratio - 1) > 0.1) ++elsewhere_off;
+      continue;
+    }
+    ++checked;
+    lowest_ratio = std::min(lowest_ratio, ratio);
+    highest_ratio = std::max(highest_ratio, ratio);
+    EXPECT_NEAR(ratio, 1, 0.1) << "strand " << s << " of card " << card;
+    // Its end: at the card's end, in its own plane across the card.
+    Vec3 last = last_of(grown(), s);
+    EXPECT_NEAR(polar_in_card(card, last), radians(kCardLastDeg), radians(8)) << "strand " << s;
+    EXPECT_NEAR(lateral_in_card(card, last), lateral_in_card(card, root), 0.005) << "strand " << s;
+  }
+  std::printf(
+      "[ grow     ] sphere: %lld strands under the other cards are %.3f to %.3f times what "
+      "remains of their card; of %lld rooted beside or above them, %lld are off by over 10%%\n",
+      static_cast<long long>(checked), lowest_ratio, highest_ratio,
+      static_cast<long long>(elsewhere), static_cast<long long>(elsewhere_off));
+  EXPECT_GT(checked, 60);
+}
+
+// cluster-all's continued roots: a root-type group in a cluster that does not start at the
+// root carries no roots, and strands reach it across a gap wider than continue_radius_h.
+TEST(StrandGrowing, ContinuedRootGroupsCarryNoRootsAndAreReachedAcrossTheirGap) {
+  // The middle group typed root (as typeify types a piece with nothing within 0.08 H
+  // before it) 0.04 m (0.17 H) below card 0's ends; card 3's cluster (2) does not start
+  // at the root either.
+  Scene scene = make_scene(true, 0, 0.04);
+  scene.input.group_type[kMiddleGroup] = GroupType::root_connected;
+  scene.input.cluster_starts_at_root = {1, 0, 0};
+  GrowResult result = grow_strands(scene.input, params_with(kStrandCount));
+  const auto& cluster = int_attribute(result.strands, "cluster");
+  double tip_end_y = scene.tip_ends.front().y();
+  int64_t reaching = 0;
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+    EXPECT_EQ(cluster[static_cast<size_t>(s)], 0) << "strand " << s;
+    if (std::abs(last_of(result.strands, s).y() - tip_end_y) <= 0.01) ++reaching;
+  }
+  EXPECT_GT(reaching, 20);
+  EXPECT_EQ(result.clusters[2].strand_count, 0);
+  EXPECT_EQ(result.clusters[2].field_voxel_count, 0);
+
+  // The gap is beyond continue_radius_h (0.08 H = 0.019 m): with the continued roots'
+  // reach cut to it, no strand gets there.
+  GrowParams near = params_with(kStrandCount);
+  near.continued_root_radius_h = near.continue_radius_h;
+  GrowResult cut = grow_strands(scene.input, near);
+  for (int64_t s = 0; s < cut.strands.strand_count(); ++s)
+    EXPECT_GT(last_of(cut.strands, s).y(), tip_end_y + 0.05) << "strand " << s;
+}
+
+/// Height of `p` above the sphere.
+double height_above_sphere(const Vec3& p) { return (p - kCentre).norm() - kRadius; }
+
+// Layers: card 0 gets an outer layer, its rails copied 14 mm above the sphere (the inner
+// ones lie 4 mm above it), a group of its own in the same cluster. With layers, the
+// strands rooted under the card split between the two heights; without, the field from
+// the scalp keeps them all low.
+TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
+  Scene scene = make_scene();
+  GrowInput& input = scene.input;
+  const StrandSet& inner = input.input_strands;
+  const auto& group = std::get<std::vector<int32_t>>(inner.strand_attributes.at("group"));
+  std::vector<Points3f> polylines;
+  std::vector<int32_t> strand_group = group;
+  for (int64_t s = 0; s < inner.strand_count(); ++s) polylines.push_back(inner.strand(s));
+  const auto outer_group = static_cast<int32_t>(input.group_type.size());
+  constexpr double kOuterHeight = 0.014;
+  for (int64_t s = 0; s < inner.strand_count(); ++s) {
+    if (group[static_cast<size_t>(s)] != kContinuedCard) continue;
+    Points3f rail = inner.strand(s);
+    for (Eigen::Index i = 0; i < rail.rows(); ++i) {
+      Vec3 p = point_of(rail, i);
+      Vec3 out = kCentre + (p - kCentre) * (kRadius + kOuterHeight) / (p - kCentre).norm();
+      rail.row(i) = out.transpose().cast<float>();
+    }
+    polylines.push_back(rail);
+    strand_group.push_back(outer_group);
+  }
+  input.input_strands = strand_set_from_polylines(polylines);
+  input.input_strands.strand_attributes["group"] = strand_group;
+  input.group_type.push_back(GroupType::root_free);
+  input.group_cluster.push_back(input.group_cluster[kContinuedCard]);
+
+  // Share of the strands rooted under card 0 whose points over the card's middle (polar
+  // 50 to 80 degrees) lie above halfway between the layers, on average.
+  auto outer_share = [&](const GrowParams& params) {
+    GrowResult result = grow_strands(input, params);
+    int64_t under = 0, outer = 0;
+    for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+      if (!under_card(kContinuedCard, root_of(result.strands, s))) continue;
+      double sum = 0;
+      int count = 0;
+      for (int64_t row = result.strands.offsets[s]; row < result.strands.offsets[s + 1]; ++row) {
+        Vec3 p = point_of(result.strands.points, row);
+        double polar = polar_in_card(kContinuedCard, p);
+        if (polar < radians(50) || polar > radians(80)) continue;
+        sum += height_above_sphere(p);
+        ++count;
+      }
+      if (count == 0) continue;
+      ++under;
+      if (sum / count > 0.009) ++outer;
+    }
+    EXPECT_GT(under, 20);
+    return static_cast<double>(outer) / static_cast<double>(std::max<int64_t>(under, 1));
+  };
+  GrowParams layered = params_with(kStrandCount);
+  GrowParams flat = layered;
+  flat.layer_radius_h = 0;
+  double with_layers = outer_share(layered), without = outer_share(flat);
+  std::printf(
+      "[ grow     ] sphere, two layers over card 0: %.2f of its strands outer with "
+      "layers, %.2f without\n",
+      with_layers, without);
+  EXPECT_GT(with_layers, 0.25);
+  EXPECT_LT(with_layers, 0.75);
+  EXPECT_LT(without, 0.1);
+}
+
+// A strand that follows a group off its rails (rooted beside a card, it leaves the field
+// at the band's edge and goes on along the card's closest rail) drifts back to within
+// follow_keep_h of them.
+TEST(StrandGrowing, StrandsFollowingAGroupDriftBackToItsRails) {
+  Scene scene = make_scene();
+  const StrandSet& rails = scene.input.input_strands;
+  // Mean distance of the last point of every input_strand run to the nearest rail point.
+  auto mean_offset = [&](const GrowParams& params) {
+    GrowResult result = grow_strands(scene.input, params);
+    double sum = 0;
+    int64_t runs = 0;
+    for (int64_t s = 0; s < result.strands.strand_count(); ++s)
+      for (int64_t row = result.strands.offsets[s]; row < result.strands.offsets[s + 1]; ++row) {
+        bool run_end = result.point_rule[static_cast<size_t>(row)] == GrowRule::input_strand &&
+                       (row + 1 == result.strands.offsets[s + 1] ||
+                        result.point_rule[static_cast<size_t>(row + 1)] != GrowRule::input_strand);
+        if (!run_end) continue;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int64_t r = 0; r < rails.point_count(); ++r)
+          nearest = std::min(
+              nearest, (point_of(rails.points, r) - point_of(result.strands.points, row)).norm());
+        sum += nearest;
+        ++runs;
+      }
+    EXPECT_GT(runs, 20);
+    return sum / static_cast<double>(std::max<int64_t>(runs, 1));
+  };
+  GrowParams pulled = params_with(kStrandCount);
+  GrowParams kept = pulled;
+  kept.follow_pull = 0;
+  double with_pull = mean_offset(pulled), without = mean_offset(kept);
+  std::printf(
+      "[ grow     ] sphere: input-strand runs end %.2f mm from a rail with the pull, "
+      "%.2f mm without\n",
+      1e3 * with_pull, 1e3 * without);
+  EXPECT_LT(with_pull, 0.02 * kHeadHeight);
+  EXPECT_LT(with_pull, without);
+}
+
+TEST(StrandGrowing, StrandsAlongInputStrandsThroughTheBodyArePushedOut) {
+  // The middle group 1.7 cm nearer the axis: its first centimetres run about 6 mm inside
+  // the sphere. Strands bridged to it and following it unchecked would go as deep; the
+  // body's signed distance keeps every point outside. (At 2 cm its start lies beyond
+  // continue_radius_h of the strands' ends, which keep the card's 4 mm off the sphere.)
+  Scene scene = make_scene(/*with_root_types=*/true, /*middle_inset=*/0.017);
+  double deepest_input_m = 0;
+  for (int64_t row = 0; row < scene.input.input_strands.point_count(); ++row)
+    deepest_input_m =
+        std::max(deepest_input_m,
+                 kRadius - (point_of(scene.input.input_strands.points, row) - kCentre).norm());
+  ASSERT_GT(deepest_input_m, 0.005);
+  GrowResult result = grow_strands(scene.input, params_with(200));
+  ASSERT_EQ(result.strands.strand_count(), 200);
+  double deepest_m = 0;
+  for (int64_t row = 0; row < result.strands.point_count(); ++row)
+    deepest_m =
+        std::max(deepest_m, kRadius - (point_of(result.strands.points, row) - kCentre).norm());
+  std::printf(
+      "[ grow     ] sphere, middle group %.1f mm deep: %lld points pushed out, deepest "
+      "%.3f mm inside\n",
+      1e3 * deepest_input_m, static_cast<long long>(result.points_pushed_out), 1e3 * deepest_m);
+  EXPECT_GT(result.continuations_other_cluster, 0);  // strands did go into the middle group
+  EXPECT_LT(deepest_m, 1e-3);
+}
+
+TEST(StrandGrowing, SameResultForOneAndTwoThreads) {
+  Scene scene = make_scene();
+  const int threads_before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  GrowResult one = grow_strands(scene.input, params_with(kStrandCount));
+  omp_set_num_threads(2);
+  GrowResult two = grow_strands(scene.input, params_with(kStrandCount));
+  omp_set_num_threads(threads_before);
+  EXPECT_TRUE(identical(one, two));
+}
+
+TEST(StrandGrowing, AnotherSeedGivesOtherRoots) {
+  Scene scene = make_scene();
+  GrowResult first = grow_strands(scene.input, params_with(200, 1));
+  GrowResult other = grow_strands(scene.input, params_with(200, 2));
+  ASSERT_EQ(other.strands.strand_count(), 200);
+  // Roots of the other seed that coincide with one of the first seed's.
+  int64_t shared = 0;
+  for (int64_t s = 0; s < 200; ++s)
+    for (int64_t r = 0; r < 200; ++r)
+      if ((root_of(other.strands, s) - root_of(first.strands, r)).norm() < 1e-6) ++shared;
+  EXPECT_LT(shared, 10);
+}
+
+/// The kind of hair::Error grow_strands() throws for `input` and its message, or -1.
+struct Refusal {
+  int kind = -1;
+  std::string message;
+};
+Refusal refusal_of(const GrowInput& input) {
+  try {
+    grow_strands(input, params_with(50));
+  } catch (const Error& error) {
+    return {static_cast<int>(error.kind()), error.what()};
+  }
+  return {};
+}
+
+TEST(StrandGrowing, RefusesInputItCannotGrowFrom) {
+  const int bad_input = static_cast<int>(ErrorKind::bad_input);
+  const Scene scene = make_scene();
+  EXPECT_EQ(refusal_of(scene.input).kind, -1);  // the scene itself grows
+
+  GrowInput no_strands = scene.input;
+  no_strands.input_strands = StrandSet{};
+  no_strands.input_strands.strand_attributes["group"] = std::vector<int32_t>{};
+  Refusal refused = refusal_of(no_strands);
+  EXPECT_EQ(refused.kind, bad_input);
+  EXPECT_NE(refused.message.find("no input strands"), std::string::npos) << refused.message;
+  for (double height : {0.0, -0.24, std::nan("")}) {
+    GrowInput input = scene.input;
+    input.head_height_m = height;
+    refused = refusal_of(input);
+    EXPECT_EQ(refused.kind, bad_input) << height;
+    EXPECT_NE(refused.message.find("head height"), std::string::npos) << refused.message;
+  }
+  for (size_t size :
+       {size_t{0}, scene.input.scalp_triangle.size() - 1, scene.input.scalp_triangle.size() + 1}) {
+    GrowInput input = scene.input;
+    input.scalp_triangle.resize(size, 1);
+    refused = refusal_of(input);
+    EXPECT_EQ(refused.kind, bad_input) << size;
+    EXPECT_NE(refused.message.find("scalp flags"), std::string::npos) << refused.message;
+  }
+  // A scalp that no root-type strand covers: the lower cap (the middle and tip groups
+  // hang outside it, and they do not carry roots anyway), or no scalp at all.
+  GrowInput lower_cap = scene.input;
+  lower_cap.scalp_triangle =
+      flags_where(lower_cap, [](const Vec3& c) { return c.y() < kCentre.y() - 0.07; });
+  GrowInput no_scalp = scene.input;
+  std::fill(no_scalp.scalp_triangle.begin(), no_scalp.scalp_triangle.end(), 0);
+  for (const GrowInput& input : {lower_cap, no_scalp}) {
+    refused = refusal_of(input);
+    EXPECT_EQ(refused.kind, bad_input);
+    EXPECT_NE(refused.message.find("no scalp triangle"), std::string::npos) << refused.message;
+    EXPECT_NE(refused.message.find("sphere"), std::string::npos) << refused.message;
+  }
+}
+
+TEST(StrandGrowing, WithoutRootTypeGroupsRootsTakeAnyStrand) {
+  Scene scene = make_scene(/*with_root_types=*/false);
+  GrowResult result = grow_strands(scene.input, params_with(200));
+  EXPECT_TRUE(result.roots_from_any_type);
+  ASSERT_EQ(result.strands.strand_count(), 200);
+  const auto& cluster = int_attribute(result.strands, "cluster");
+  double shortest_m = std::numeric_limits<double>::infinity();
+  for (int64_t s = 0; s < 200; ++s) {
+    // The cluster of the nearest strand of any type; no field anywhere (no root-type
+    // strands), so the strand follows input strands from its root.
+    int32_t group =
+        nearest_group(scene.input, root_of(result.strands, s), [](GroupType) { return true; });
+    EXPECT_EQ(cluster[static_cast<size_t>(s)],
+              scene.input.group_cluster[static_cast<size_t>(group)])
+        << "strand " << s;
+    std::vector<GrowRule> rules = rules_of(result, s);
+    EXPECT_EQ(count_rule(rules, GrowRule::field), 0) << "strand " << s;
+    EXPECT_GT(count_rule(rules, GrowRule::input_strand), 0) << "strand " << s;
+    shortest_m = std::min(shortest_m, strand_length(result.strands, s));
+  }
+  for (const GrownCluster& grown_cluster : result.clusters)
+    EXPECT_EQ(grown_cluster.field_voxel_count, 0);
+  std::printf("[ grow     ] sphere, no root-type group: shortest strand %.3f m\n", shortest_m);
+  // Every strand runs down its card from the scalp's edge at least (polar 60 to 110
+  // degrees, about 9 cm).
+  EXPECT_GT(shortest_m, 0.08);
+}
+
+}  // namespace
+}  // namespace hair

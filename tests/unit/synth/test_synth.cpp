@@ -1,0 +1,349 @@
+// The synthetic hair generator (common/hair/synth, issue 3): every patch labelled, the
+// patches of a stream chained root to tip, determinism, and every preset's mesh read by
+// extract_strands with one group per patch, oriented as the truth says.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include "hair/core/error.h"
+#include "hair/extract/extract.h"
+#include "hair/geom/triangle_mesh_distance.h"
+#include "hair/mesh/mesh_io.h"
+#include "hair/synth/synth_eval.h"
+#include "hair/synth/synth_io.h"
+#include "hair/synth/synth_model.h"
+
+namespace hair::synth {
+namespace {
+
+const PolyMesh& body_m() {
+  static const PolyMesh body = [] {
+    PolyMesh mesh = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+    mesh.vertices *= 0.1f;
+    return mesh;
+  }();
+  return body;
+}
+
+class SynthPreset : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SynthPreset, EveryPatchLabelledAndPartitioningTheMesh) {
+  SynthModel model = generate_model(preset(GetParam()), body_m(), 7);
+  ASSERT_FALSE(model.patches.empty());
+  int64_t next_vertex = 0, next_face = 0;
+  int32_t streams = static_cast<int32_t>(model.stream_style.size());
+  EXPECT_EQ(model.stream_centres.strand_count(), streams);
+  for (const SynthPatch& patch : model.patches) {
+    EXPECT_GE(patch.stream, 0);
+    EXPECT_LT(patch.stream, streams);
+    EXPECT_EQ(patch.first_vertex, next_vertex);
+    EXPECT_EQ(patch.first_face, next_face);
+    EXPECT_GT(patch.face_count, 0);
+    EXPECT_EQ(patch.vertex_count % patch.rails, 0);
+    next_vertex += patch.vertex_count;
+    next_face += patch.face_count;
+  }
+  EXPECT_EQ(next_vertex, model.mesh.vertex_count());
+  EXPECT_EQ(next_face, model.mesh.face_count());
+  EXPECT_EQ(model.mesh.corner_uv.rows(),
+            static_cast<Eigen::Index>(model.mesh.face_vertices.size()));
+  EXPECT_TRUE(model.mesh.vertices.allFinite());
+  EXPECT_TRUE(model.strands.points.allFinite());
+  EXPECT_GE(model.strands.strand_count(), streams);  // every stream has true strands
+  EXPECT_EQ(static_cast<int64_t>(model.strand_point_style.size()), model.strands.point_count());
+  // Every style of a patch is the style of some true-strand points, and no other is.
+  std::set<HairStyle> patch_styles,
+      point_styles(model.strand_point_style.begin(), model.strand_point_style.end());
+  for (const SynthPatch& patch : model.patches) patch_styles.insert(patch.style);
+  EXPECT_EQ(patch_styles, point_styles);
+}
+
+TEST_P(SynthPreset, PatchesOfAStreamChainRootToTip) {
+  SynthModel model = generate_model(preset(GetParam()), body_m(), 7);
+  Triangles3i triangles = fan_triangulation(body_m().face_offsets, body_m().face_vertices);
+  TriangleMeshDistance body(body_m().vertices, triangles);
+  std::map<int32_t, std::vector<const SynthPatch*>> by_stream;
+  for (const SynthPatch& patch : model.patches) by_stream[patch.stream].push_back(&patch);
+  ASSERT_EQ(by_stream.size(), model.stream_style.size());
+  // Mean position of the vertices of a patch at arc length `along` (its first or last row).
+  auto row_centre = [&](const SynthPatch& patch, float along) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (int64_t v = patch.first_vertex; v < patch.first_vertex + patch.vertex_count; ++v)
+      if (std::abs(model.vertex_along_m[static_cast<size_t>(v)] - along) < 1e-6f) {
+        sum += model.mesh.vertices.row(v).cast<double>().transpose();
+        ++count;
+      }
+    EXPECT_GT(count, 0);
+    return Eigen::Vector3d(sum / std::max(count, 1));
+  };
+  for (const auto& [stream, patches] : by_stream) {
+    ASSERT_FALSE(patches.empty());
+    // The root lies on the head.
+    EXPECT_LT(
+        body.distance(row_centre(*patches.front(), static_cast<float>(patches.front()->start_m))),
+        0.02)
+        << "stream " << stream;
+    EXPECT_EQ(patches.front()->start_m, 0.0);
+    for (size_t k = 0; k < patches.size(); ++k) {
+      const SynthPatch& patch = *patches[k];
+      EXPECT_EQ(patch.index_in_stream, static_cast<int32_t>(k));
+      GroupType expected = patches.size() == 1       ? GroupType::root_free
+                           : k == 0                  ? GroupType::root_connected
+                           : k + 1 == patches.size() ? GroupType::tip
+                                                     : GroupType::middle;
+      EXPECT_EQ(patch.type, expected) << "stream " << stream << " patch " << k;
+      EXPECT_LT(patch.start_m, patch.end_m);
+      if (k == 0) continue;
+      const SynthPatch& before = *patches[k - 1];
+      // The next patch starts where this one ends, up to the hidden gap (at most the
+      // largest band gap, 4.5 cm) or an overlap.
+      EXPECT_GT(patch.start_m, before.start_m);
+      EXPECT_LT(patch.start_m - before.end_m, 0.05);
+      Eigen::Vector3d end = row_centre(before, static_cast<float>(before.end_m));
+      Eigen::Vector3d start = row_centre(patch, static_cast<float>(patch.start_m));
+      EXPECT_LT((end - start).norm(), 0.06) << "stream " << stream << " patch " << k;
+    }
+  }
+}
+
+TEST_P(SynthPreset, SameSeedSameModelOtherSeedOtherModel) {
+  HairStyleSpec spec = preset(GetParam());
+  SynthModel first = generate_model(spec, body_m(), 11);
+  SynthModel again = generate_model(spec, body_m(), 11);
+  SynthModel other = generate_model(spec, body_m(), 12);
+  EXPECT_EQ(obj_text(first, 0.1), obj_text(again, 0.1));
+  EXPECT_TRUE(first.strands.points == again.strands.points);
+  EXPECT_NE(obj_text(first, 0.1), obj_text(other, 0.1));
+}
+
+/// Share of extracted strands running root to tip by the truth (arc length along the
+/// stream growing from the strand's first point to its last), and the check that each
+/// group is exactly one patch.
+TEST_P(SynthPreset, ExtractFindsEveryPatchOrientedAsTheTruthSays) {
+  for (uint32_t seed : {1u, 2u, 3u}) {
+    SynthModel model = generate_model(varied_spec(preset(GetParam()), seed), body_m(), seed);
+    // Through the OBJ text as hair-synth writes it, in decimetres.
+    std::filesystem::path obj =
+        std::filesystem::temp_directory_path() /
+        ("hair_synth_test_" + GetParam() + "_" + std::to_string(seed) + ".obj");
+    {
+      std::FILE* file = std::fopen(obj.c_str(), "wb");
+      ASSERT_NE(file, nullptr);
+      std::string text = obj_text(model, 0.1);
+      std::fwrite(text.data(), 1, text.size(), file);
+      std::fclose(file);
+    }
+    PolyMesh hair = read_mesh(obj);
+    std::filesystem::remove(obj);
+    PolyMesh body = body_m();
+    body.vertices *= 10.0f;
+    ExtractParams params;
+    params.unit_scale = 0.1;
+    ExtractResult result = extract_strands(hair, body, params, obj.string(), "body.obj");
+    ASSERT_EQ(result.group_count(), static_cast<int32_t>(model.patches.size()))
+        << GetParam() << " seed " << seed;
+
+    // Per group: its patch, and whether its strands run root to tip, tip to root or
+    // across (a rail read across the hair: both ends at the same arc length).
+    std::vector<int32_t> group_patch = group_patches(model, result);
+    std::vector<GroupOrientation> orientation = group_orientations(model, result, group_patch);
+    std::array<std::array<int, 3>, 3> by_order{};  // [vertex order][agree, reversed, across]
+    int agreeing_groups = 0;
+    for (int32_t g = 0; g < result.group_count(); ++g) {
+      auto verdict = static_cast<size_t>(orientation[static_cast<size_t>(g)]);
+      agreeing_groups += verdict == 0 ? 1 : 0;
+      ASSERT_GE(group_patch[static_cast<size_t>(g)], 0) << "group " << g << " spans patches";
+      auto order = static_cast<size_t>(
+          model.patches[static_cast<size_t>(group_patch[static_cast<size_t>(g)])].order);
+      ++by_order[order][verdict];
+    }
+    std::vector<int32_t> sorted = group_patch;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(std::unique(sorted.begin(), sorted.end()), sorted.end()) << "two groups on one patch";
+    double share = static_cast<double>(agreeing_groups) / result.group_count();
+    std::printf(
+        "[ synth    ] %-15s seed %u: %3zu patches, %.3f root to tip; natural %d/%d/%d, "
+        "reversed %d/%d/%d, shuffled %d/%d/%d (right/wrong way/across)\n",
+        GetParam().c_str(), seed, model.patches.size(), share, by_order[0][0], by_order[0][1],
+        by_order[0][2], by_order[1][0], by_order[1][1], by_order[1][2], by_order[2][0],
+        by_order[2][1], by_order[2][2]);
+    // Measured over the presets, seeds 1-3: 0.71 (two_braids) to 1.0 (short). Wrong ones
+    // are mostly patches numbered tip to root (extract trusts vertex order unless the
+    // head distance overrules it) and braid pieces; see docs/synth.md. Hair lying on the
+    // scalp (short_cap: 0.4-1.0) keeps its distance to the head, so nothing overrules
+    // vertex order there, and a few grids, each a whole stream, make a model's share
+    // swing with its reversed share (up to 0.3): only its natural-order grids are held
+    // to being right (below).
+    bool lies_on_scalp = model.spec.components[0].kind == ComponentSpec::Kind::short_cap;
+    if (!lies_on_scalp) {
+      EXPECT_GE(share, 0.65) << GetParam() << " seed " << seed;
+    }
+    // Hair numbered root to tip away from braids is never read the wrong way (a few
+    // short wavy pieces are read across).
+    if (model.spec.components.size() == 1 &&
+        model.spec.components[0].kind != ComponentSpec::Kind::braid) {
+      EXPECT_EQ(by_order[0][1], 0) << GetParam() << " seed " << seed;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, SynthPreset, ::testing::ValuesIn(preset_names()),
+                         [](const auto& test_info) { return test_info.param; });
+
+TEST(SynthPresets, UnknownPresetIsAUsageError) { EXPECT_THROW(preset("mohawk"), hair::Error); }
+
+TEST(SynthPresets, CorpusCyclingThePresetsMeetsTheIssuesMinimums) {
+  // What `hair-synth corpus --count 60` builds.
+  std::array<int, 4> totals{};
+  int mixed = 0;
+  std::vector<CorpusEntry> plan = corpus_plan(60, 1);
+  ASSERT_EQ(plan.size(), 60u);
+  EXPECT_EQ(plan[13].name, "medium_straight_013");  // 13 mod 11 presets
+  EXPECT_EQ(plan[5].preset, "short_cap");
+  for (const CorpusEntry& entry : plan) {
+    mixed += entry.spec.components.size() > 1 ? 1 : 0;
+    SynthModel model = generate_model(entry.spec, body_m(), entry.seed, 2);
+    auto counts = streams_by_style(model);
+    for (size_t s = 0; s < 4; ++s) totals[s] += counts[s];
+  }
+  std::printf(
+      "[ synth    ] corpus of 60: streams normal %d, fixed %d, short %d, braided %d; "
+      "%d mixed models\n",
+      totals[0], totals[1], totals[2], totals[3], mixed);
+  for (int total : totals) EXPECT_GE(total, 15);
+  EXPECT_GE(mixed, 10);
+}
+
+/// Hair lying on the head (short_cap): one grid per stream, short and root-free, lying
+/// 2-5 mm off the scalp from near the crown down to the hairline, within its drawn
+/// length; a layered cut (normal_pieces_max 2) gives a root and a tip piece, both short.
+/// The largest angle, in degrees, between consecutive steps of `points`, `stride` points
+/// apart, over the points from `first` on.
+double largest_turn_deg(const std::vector<Eigen::Vector3d>& points, size_t stride, size_t first) {
+  double largest = 0;
+  for (size_t i = std::max(first, stride); i + stride < points.size(); ++i) {
+    Eigen::Vector3d before = points[i] - points[i - stride], after = points[i + stride] - points[i];
+    double cosine = std::clamp(before.normalized().dot(after.normalized()), -1.0, 1.0);
+    largest = std::max(largest, std::acos(cosine) * 180 / std::numbers::pi);
+  }
+  return largest;
+}
+
+// A braid 3 cm wide bends over a shoulder with a radius of a few centimetres. two_braids'
+// braids hang over the shoulders, where their axes used to be pushed off the body within
+// a step or two: up to 79 degrees between 4 mm steps, and streams folding by up to 169
+// degrees over 2 cm (docs/synth.md).
+TEST(SynthBraid, AxesAndStreamsHaveNoCreaseOverTheShoulders) {
+  for (uint32_t seed : {1u, 2u, 3u, 4u}) {
+    SynthModel model = generate_model(varied_spec(preset("two_braids"), seed), body_m(), seed, 2);
+    std::vector<int> braided;
+    for (int s = 0; s < static_cast<int>(model.stream_style.size()); ++s)
+      if (model.stream_style[static_cast<size_t>(s)] == HairStyle::braided) braided.push_back(s);
+    ASSERT_EQ(braided.size(), 6u);
+    for (size_t b = 0; b < braided.size(); b += 3) {
+      // The three streams end on the same axis points: their mean is the axis there
+      // (the offsets of the three phases sum to zero).
+      Eigen::Index shortest = std::numeric_limits<Eigen::Index>::max();
+      for (size_t k = 0; k < 3; ++k)
+        shortest = std::min(shortest, model.stream_centres.strand(braided[b + k]).rows());
+      auto tail = static_cast<size_t>(shortest / 2);
+      std::vector<Eigen::Vector3d> axis(tail, Eigen::Vector3d::Zero());
+      for (size_t k = 0; k < 3; ++k) {
+        auto centre = model.stream_centres.strand(braided[b + k]);
+        for (size_t i = 0; i < tail; ++i)
+          axis[i] += centre.row(centre.rows() - static_cast<Eigen::Index>(tail - i))
+                         .cast<double>()
+                         .transpose() /
+                     3.0;
+        std::vector<Eigen::Vector3d> stream;
+        for (Eigen::Index i = centre.rows() - static_cast<Eigen::Index>(tail); i < centre.rows();
+             ++i)
+          stream.push_back(centre.row(i).cast<double>().transpose());
+        // Points 2 apart (about 1 cm): the weave itself turns by up to 78 degrees there on
+        // braid and normal_braid, hanging down the back (seeds 1-6).
+        EXPECT_LT(largest_turn_deg(stream, 2, 0), 85.0) << "seed " << seed << " stream " << k;
+      }
+      // Between 4 mm steps: a bend of 3 cm radius turns by 7.6 degrees.
+      EXPECT_LT(largest_turn_deg(axis, 1, 0), 8.0) << "seed " << seed << " braid " << b / 3;
+    }
+  }
+}
+
+TEST(SynthShortCap, GridsLieOnTheScalpFromTheCrownDownToTheHairline) {
+  Triangles3i triangles = fan_triangulation(body_m().face_offsets, body_m().face_vertices);
+  TriangleMeshDistance body(body_m().vertices, triangles);
+  HairStyleSpec spec = preset("short_cap");
+  spec.defects.jitter_m = 0;
+  SynthModel model = generate_model(spec, body_m(), 4);
+  ASSERT_EQ(model.patches.size(), static_cast<size_t>(spec.components[0].stream_count));
+  for (const SynthPatch& patch : model.patches) {
+    EXPECT_EQ(patch.type, GroupType::root_free);
+    EXPECT_EQ(patch.style, HairStyle::short_hair);
+    EXPECT_EQ(patch.rails, spec.defects.cap_rails);
+  }
+  // Every vertex 3 mm (root) to 4.5 mm (tip) off the body: lying on the scalp.
+  for (Eigen::Index v = 0; v < model.mesh.vertices.rows(); ++v) {
+    double distance = body.distance(model.mesh.vertices.row(v).cast<double>().transpose());
+    EXPECT_GT(distance, 0.002) << "vertex " << v;
+    EXPECT_LT(distance, 0.005) << "vertex " << v;
+  }
+  // Streams run down from near the top of the head, no longer than drawn; none reaches
+  // below the nape's hairline (115 degrees from the crown: about ear height).
+  float top_y = body_m().vertices.col(1).maxCoeff();
+  for (int64_t s = 0; s < model.stream_centres.strand_count(); ++s) {
+    auto first = model.stream_centres.offsets[static_cast<size_t>(s)];
+    auto last = model.stream_centres.offsets[static_cast<size_t>(s) + 1] - 1;
+    Eigen::Vector3f root = model.stream_centres.points.row(first).transpose();
+    Eigen::Vector3f tip = model.stream_centres.points.row(last).transpose();
+    EXPECT_GT(root.y(), top_y - 0.04f) << "stream " << s;
+    EXPECT_LT(tip.y(), root.y() - 0.02f) << "stream " << s;
+    EXPECT_GT(tip.y(), top_y - 0.15f) << "stream " << s;
+    float length = 0;
+    for (auto i = first; i < last; ++i)
+      length +=
+          (model.stream_centres.points.row(i + 1) - model.stream_centres.points.row(i)).norm();
+    EXPECT_LE(length, spec.components[0].length_max_m + 0.005) << "stream " << s;
+    EXPECT_GT(length, 0.05) << "stream " << s;
+  }
+
+  spec.defects.normal_pieces_max = 2;
+  SynthModel layered = generate_model(spec, body_m(), 4);
+  int root_pieces = 0, tip_pieces = 0;
+  for (const SynthPatch& patch : layered.patches) {
+    EXPECT_EQ(patch.style, HairStyle::short_hair);
+    root_pieces += patch.type == GroupType::root_connected ? 1 : 0;
+    tip_pieces += patch.type == GroupType::tip ? 1 : 0;
+  }
+  EXPECT_GT(root_pieces, 0);
+  EXPECT_EQ(root_pieces, tip_pieces);
+}
+
+TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
+  for (const std::string& name : preset_names()) {
+    HairStyleSpec spec = varied_spec(preset(name), 5);
+    EXPECT_NO_THROW(check_spec(spec)) << name;
+    EXPECT_EQ(spec_json(spec_from_json(spec_json(spec))), spec_json(spec)) << name;
+  }
+  nlohmann::json json = spec_json(preset("short"));
+  json["defects"]["reversed_share"] = 2.0;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("short"));
+  json["defects"]["rails"] = 3;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("short"));
+  json["components"][0]["kind"] = "mohawk";
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("short"));
+  json["components"][0]["stream_count"] = "many";
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+}
+
+}  // namespace
+}  // namespace hair::synth

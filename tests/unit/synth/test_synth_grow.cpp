@@ -1,0 +1,332 @@
+// The grow stage (paper section 4.4) measured against the true strands of synthetic
+// hairstyles (issue 5): extract -> typeify -> cluster-middle -> cluster-all -> grow, in
+// memory, on every preset with its knobs varied by seeds 1-3, then the distances between
+// the grown strands and the true ones in head heights H, printed as a table.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "hair/cluster/hair_clustering.h"
+#include "hair/cluster/typeify.h"
+#include "hair/extract/extract.h"
+#include "hair/geom/point_index.h"
+#include "hair/grow/strand_growing.h"
+#include "hair/mesh/mesh_io.h"
+#include "hair/synth/synth_model.h"
+#include "unit/clustered_in_memory.h"
+#include "unit/mean_column.h"
+
+namespace hair::synth {
+namespace {
+
+using hair::testing::kNotMeasured;
+constexpr int kStrandCount = 2000;  ///< grown strands per model (the stage grows 10k)
+/// True strands per stream (the generator's default). Fidelity is measured to the nearest
+/// true strand, so it includes half the spacing of the true strands across a strip: with
+/// 8 per stream the mean over presets reads 0.016 H instead of 0.011 H.
+constexpr int kTrueStrandsPerStream = 24;
+/// Coverage is measured from every third true strand (8 per stream): enough to find the
+/// hair that no grown strand reaches, at a third of the cost.
+constexpr int kCoverageStrandStride = 3;
+constexpr double kFarH = 0.1;  ///< a grown point this far from every true strand left the hair
+/// A grown strand rooted under a braid goes through it when its lowest point comes this
+/// close to the height of the braid's tip.
+constexpr double kBraidTipReachH = 0.05;
+
+/// Distance from a point to the nearest segment of a strand set, over the segments next to
+/// the few nearest points (the points are a few mm apart along a strand).
+class SegmentDistance {
+ public:
+  explicit SegmentDistance(const StrandSet& strands) : strands_(strands), index_(strands.points) {
+    strand_of_.resize(static_cast<size_t>(strands.point_count()));
+    for (int64_t s = 0; s < strands.strand_count(); ++s)
+      for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
+        strand_of_[static_cast<size_t>(row)] = s;
+  }
+
+  double operator()(const Eigen::Vector3f& query) const {
+    Eigen::Vector3d q = query.cast<double>();
+    double best = std::numeric_limits<double>::infinity();
+    for (int32_t p : index_.nearest(query, 4)) {
+      int64_t s = strand_of_[static_cast<size_t>(p)];
+      best = std::min(best, (point(p) - q).norm());
+      if (p > strands_.offsets[s]) best = std::min(best, to_segment(q, point(p - 1), point(p)));
+      if (p + 1 < strands_.offsets[s + 1])
+        best = std::min(best, to_segment(q, point(p), point(p + 1)));
+    }
+    return best;
+  }
+
+ private:
+  Eigen::Vector3d point(int64_t row) const {
+    return strands_.points.row(row).cast<double>().transpose();
+  }
+  static double to_segment(const Eigen::Vector3d& q, const Eigen::Vector3d& a,
+                           const Eigen::Vector3d& b) {
+    Eigen::Vector3d ab = b - a;
+    double length2 = ab.squaredNorm();
+    double t = length2 > 0 ? std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - q).norm();
+  }
+
+  const StrandSet& strands_;
+  PointIndex index_;
+  std::vector<int64_t> strand_of_;
+};
+
+double mean_of(const std::vector<double>& values) {
+  if (values.empty()) return kNotMeasured;
+  double sum = 0;
+  for (double value : values) sum += value;
+  return sum / static_cast<double>(values.size());
+}
+
+/// The value at `share` of the sorted values (nearest rank); NaN when there are none.
+double quantile(std::vector<double> values, double share) {
+  if (values.empty()) return kNotMeasured;
+  auto rank = static_cast<size_t>(share * static_cast<double>(values.size() - 1) + 0.5);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank),
+                   values.end());
+  return values[rank];
+}
+
+double share_of(int64_t count, size_t total) {
+  return total ? static_cast<double>(count) / static_cast<double>(total) : kNotMeasured;
+}
+
+double strand_length(const StrandSet& strands, int64_t s) {
+  double length = 0;
+  for (int64_t row = strands.offsets[s] + 1; row < strands.offsets[s + 1]; ++row)
+    length += (strands.points.row(row) - strands.points.row(row - 1)).cast<double>().norm();
+  return length;
+}
+
+/// What one model measured; distances in H.
+struct GrowScores {
+  double fidelity_mean = kNotMeasured, fidelity_p95 = kNotMeasured;
+  double coverage_mean = kNotMeasured, coverage_p95 = kNotMeasured;
+  double far_share = kNotMeasured;     ///< grown points over kFarH from every true strand
+  double length_ratio = kNotMeasured;  ///< median of grown length / nearest true length
+  double short_share = kNotMeasured;   ///< grown strands under half that true length
+  double braid_reach = kNotMeasured;   ///< braid-rooted grown strands reaching its tip
+  int64_t strand_count = 0;
+  bool finite = true;
+};
+
+/// Measures `grown` against the model's true strands.
+GrowScores measure(const SynthModel& model, const StrandSet& grown, double h) {
+  const StrandSet& truth = model.strands;
+  GrowScores scores;
+  scores.strand_count = grown.strand_count();
+  scores.finite = grown.points.allFinite();
+
+  // (a) Fidelity: from every grown point but the roots to the nearest true segment.
+  SegmentDistance to_truth(truth);
+  std::vector<double> to_truth_h(static_cast<size_t>(grown.point_count()));
+#pragma omp parallel for schedule(static)
+  for (int64_t row = 0; row < grown.point_count(); ++row)
+    to_truth_h[static_cast<size_t>(row)] = to_truth(grown.points.row(row).transpose()) / h;
+  std::vector<double> fidelity;
+  int64_t far = 0;
+  for (int64_t s = 0; s < grown.strand_count(); ++s)
+    for (int64_t row = grown.offsets[s] + 1; row < grown.offsets[s + 1]; ++row) {
+      fidelity.push_back(to_truth_h[static_cast<size_t>(row)]);
+      if (fidelity.back() > kFarH) ++far;
+    }
+  scores.fidelity_mean = mean_of(fidelity);
+  scores.fidelity_p95 = quantile(fidelity, 0.95);
+  scores.far_share = share_of(far, fidelity.size());
+
+  // (b) Coverage: from the points of the true strands to the nearest grown segment.
+  std::vector<int64_t> true_rows;
+  for (int64_t s = 0; s < truth.strand_count(); s += kCoverageStrandStride)
+    for (int64_t row = truth.offsets[s]; row < truth.offsets[s + 1]; ++row)
+      true_rows.push_back(row);
+  SegmentDistance to_grown(grown);
+  std::vector<double> coverage(true_rows.size());
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < true_rows.size(); ++i)
+    coverage[i] = to_grown(truth.points.row(true_rows[i]).transpose()) / h;
+  scores.coverage_mean = mean_of(coverage);
+  scores.coverage_p95 = quantile(coverage, 0.95);
+
+  // (c) Length, against the true strand whose root is nearest the grown root.
+  Points3f true_roots(truth.strand_count(), 3);
+  std::vector<double> true_length(static_cast<size_t>(truth.strand_count()));
+  for (int64_t s = 0; s < truth.strand_count(); ++s) {
+    true_roots.row(s) = truth.points.row(truth.offsets[s]);
+    true_length[static_cast<size_t>(s)] = strand_length(truth, s);
+  }
+  PointIndex true_root_index(true_roots);
+
+  // (d) Each braid's tip height: the mean of the lowest points of its true strands.
+  const auto& stream = std::get<std::vector<int32_t>>(truth.strand_attributes.at("stream"));
+  auto component_of = [&](int64_t true_strand) {
+    return model.stream_component[static_cast<size_t>(stream[static_cast<size_t>(true_strand)])];
+  };
+  std::map<int32_t, double> braid_tip_y;
+  std::map<int32_t, int> braid_true_strands;
+  for (int64_t s = 0; s < truth.strand_count(); ++s) {
+    int32_t component = component_of(s);
+    if (model.spec.components[static_cast<size_t>(component)].kind != ComponentSpec::Kind::braid)
+      continue;
+    braid_tip_y[component] += truth.strand(s).col(1).minCoeff();
+    ++braid_true_strands[component];
+  }
+  for (auto& [component, y] : braid_tip_y) y /= braid_true_strands[component];
+
+  std::vector<double> ratios;
+  int64_t short_strands = 0, braid_strands = 0, braid_reached = 0;
+  for (int64_t s = 0; s < grown.strand_count(); ++s) {
+    int32_t nearest =
+        true_root_index.nearest(grown.points.row(grown.offsets[s]).transpose(), 1).front();
+    ratios.push_back(strand_length(grown, s) / true_length[static_cast<size_t>(nearest)]);
+    if (ratios.back() < 0.5) ++short_strands;
+    auto tip = braid_tip_y.find(component_of(nearest));
+    if (tip == braid_tip_y.end()) continue;
+    ++braid_strands;
+    if (grown.strand(s).col(1).minCoeff() <= tip->second + kBraidTipReachH * h) ++braid_reached;
+  }
+  scores.length_ratio = quantile(ratios, 0.5);
+  scores.short_share = share_of(short_strands, ratios.size());
+  scores.braid_reach = share_of(braid_reached, static_cast<size_t>(braid_strands));
+  return scores;
+}
+
+/// Grown strands and the head height H they were grown with.
+struct Grown {
+  GrowResult result;
+  double head_height_m = 0;
+};
+
+/// Extract, typeify, both clusterings and grow, in memory, as the stages chain them.
+Grown grow_model(const SynthModel& model, const PolyMesh& body, const std::string& name) {
+  hair::testing::ClusteredInMemory run = hair::testing::cluster_in_memory(model.mesh, body, name);
+  ExtractResult& extract = run.extract;
+  const double h = run.head_height_m;
+  const GroupTypes& found = run.types;
+  const HairClustering& clusters = run.clusters;
+  GrowInput input;
+  input.input_strands = std::move(extract.strands);
+  input.group_type = found.type;
+  input.group_cluster = clusters.cluster;
+  input.cluster_starts_at_root = clusters.cluster_starts_at_root;
+  input.body_vertices = std::move(extract.body_vertices);
+  input.body_triangles = std::move(extract.body_triangles);
+  input.scalp_triangle = std::move(extract.scalp_triangle);
+  input.head_height_m = h;
+  input.source = name;
+  GrowParams params;
+  params.strand_count = kStrandCount;
+  return {grow_strands(input, params), h};
+}
+
+using Column = hair::testing::MeanColumn;
+
+/// One line of the table: the mean of its models (or of its presets' lines).
+struct Row {
+  Column fidelity_mean, fidelity_p95, coverage_mean, coverage_p95, far_share, length_ratio,
+      short_share, braid_reach;
+  double seconds = 0;
+  void add(const GrowScores& scores) {
+    fidelity_mean.add(scores.fidelity_mean);
+    fidelity_p95.add(scores.fidelity_p95);
+    coverage_mean.add(scores.coverage_mean);
+    coverage_p95.add(scores.coverage_p95);
+    far_share.add(scores.far_share);
+    length_ratio.add(scores.length_ratio);
+    short_share.add(scores.short_share);
+    braid_reach.add(scores.braid_reach);
+  }
+  void add(const Row& row) {
+    fidelity_mean.add(row.fidelity_mean.mean());
+    fidelity_p95.add(row.fidelity_p95.mean());
+    coverage_mean.add(row.coverage_mean.mean());
+    coverage_p95.add(row.coverage_p95.mean());
+    far_share.add(row.far_share.mean());
+    length_ratio.add(row.length_ratio.mean());
+    short_share.add(row.short_share.mean());
+    braid_reach.add(row.braid_reach.mean());
+    seconds += row.seconds;
+  }
+  void print(const std::string& label) const {
+    std::printf(
+        "[ synth    ] %-15s | %6.4f %6.4f | %6.4f %6.4f | %6.4f | %6.3f %6.3f | %6.3f | %5.1f\n",
+        label.c_str(), fidelity_mean.mean(), fidelity_p95.mean(), coverage_mean.mean(),
+        coverage_p95.mean(), far_share.mean(), length_ratio.mean(), short_share.mean(),
+        braid_reach.mean(), seconds);
+  }
+};
+
+TEST(SynthGrow, DistanceToTrueStrandsPerPreset) {
+  PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+  body.vertices *= 0.1f;
+  std::printf(
+      "[ synth    ] %-15s | fidelity (H)  | coverage (H)  | >0.1 H | length ratio  | braid  |"
+      " time\n",
+      "");
+  std::printf(
+      "[ synth    ] %-15s |   mean    p95 |   mean    p95 | share  | median   <0.5 | reach  |"
+      "  (s)\n",
+      "preset");
+  std::map<std::string, Row> rows;
+  Row presets, braided;
+  for (const std::string& name : preset_names()) {
+    Row& row = rows[name];
+    for (uint32_t seed : {1u, 2u, 3u}) {
+      SCOPED_TRACE(name + ", seed " + std::to_string(seed));
+      auto start = std::chrono::steady_clock::now();
+      SynthModel model =
+          generate_model(varied_spec(preset(name), seed), body, seed, kTrueStrandsPerStream);
+      Grown grown = grow_model(model, body, name);
+      GrowScores scores = measure(model, grown.result.strands, grown.head_height_m);
+      row.seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      row.add(scores);
+      EXPECT_EQ(scores.strand_count, kStrandCount);
+      EXPECT_TRUE(scores.finite);
+      EXPECT_FALSE(std::isnan(scores.fidelity_mean) || std::isnan(scores.fidelity_p95));
+      EXPECT_FALSE(std::isnan(scores.coverage_mean) || std::isnan(scores.coverage_p95));
+      EXPECT_FALSE(std::isnan(scores.length_ratio));
+    }
+    row.print(name);
+    presets.add(row);
+    if (name.find("braid") != std::string::npos) braided.add(row);
+  }
+  presets.print("mean of presets");
+  braided.print("braided presets");
+
+  // Floors that catch a regression, with a margin below what grow measured when it landed
+  // (commit 01dfda8; 2000 strands, seeds 1-3, per preset the mean of its three models):
+  //   fidelity mean 0.0076-0.0116 H, short 0.0208 H, 0.0109 H over the presets; p95 at
+  //   most 0.048 H (short); share of grown points over 0.1 H from the truth at most 0.0014;
+  //   coverage mean 0.0087-0.0533 H (two_braids), 0.0252 H over the presets;
+  //   median length ratio 0.536 (two_braids) to 1.095, 0.813 over the presets;
+  //   braid reach: braid 0.596, normal_braid 0.000, two_braids 0.301.
+  // They are not the aim: most strands rooted under a braid stop at or near its top, and
+  // half_up's ponytail tail (behind a 4.5 cm hidden gap) is not grown at all.
+  for (const auto& [name, row] : rows) {
+    SCOPED_TRACE(name);
+    EXPECT_LT(row.fidelity_mean.mean(), 0.03);
+    EXPECT_LT(row.fidelity_p95.mean(), 0.07);
+    EXPECT_LT(row.far_share.mean(), 0.01);
+    EXPECT_LT(row.coverage_mean.mean(), 0.08);
+    EXPECT_GT(row.length_ratio.mean(), 0.4);
+  }
+  EXPECT_LT(presets.fidelity_mean.mean(), 0.015);
+  EXPECT_LT(presets.coverage_mean.mean(), 0.035);
+  EXPECT_GT(presets.length_ratio.mean(), 0.7);
+  EXPECT_GT(rows.at("braid").braid_reach.mean(), 0.4);
+  EXPECT_GT(braided.braid_reach.mean(), 0.2);
+}
+
+}  // namespace
+}  // namespace hair::synth
