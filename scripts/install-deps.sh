@@ -24,6 +24,8 @@ packages=(
   libgtest-dev libgmock-dev
   # h5ls, h5dump: to look into the pipeline's outputs
   hdf5-tools
+  # functions' extents for the layout test (scripts/check-function-length.sh)
+  universal-ctags
 )
 
 if [[ "${1:-}" == "--list" ]]; then

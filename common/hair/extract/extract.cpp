@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <string>
+#include <utility>
 
 #include "hair/core/error.h"
 #include "hair/geom/point_index.h"
@@ -331,57 +334,35 @@ void append_rail(std::vector<Points3f>& polylines, const Points3f& vertices,
   source_vertex.insert(source_vertex.end(), rail.begin(), rail.end());
 }
 
-}  // namespace
-
-ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
-                              const std::string& hair_file, const std::string& body_file) {
-  ExtractResult result;
-  MeshCleanup cleanup = clean_mesh(hair_mesh, hair_file);
-  clean_mesh(body_mesh, body_file);
-  hair_mesh.vertices *= static_cast<float>(params.unit_scale);
-  body_mesh.vertices *= static_cast<float>(params.unit_scale);
-  result.stats.degenerate_faces_removed = cleanup.degenerate_faces_removed;
-
-  // The body: head height H, head region, triangles.
-  result.head = head_measures(body_mesh, body_file);
-  if (params.head_height_m > 0) {
-    result.head.head_height = params.head_height_m;
-    result.head.neck_y = result.head.head_top_y - params.head_height_m;
-  }
-  result.body_vertices = body_mesh.vertices;
-  result.body_triangles = fan_triangulation(body_mesh.face_offsets, body_mesh.face_vertices);
-  Triangles3i head_triangles(result.body_triangles.rows(), 3);
+/// The body's triangles with a vertex at or above the neck.
+Triangles3i head_triangles_of(const Points3f& body_vertices, const Triangles3i& body_triangles,
+                              double neck_y, const std::string& body_file) {
+  Triangles3i head_triangles(body_triangles.rows(), 3);
   Eigen::Index head_triangle_count = 0;
-  for (Eigen::Index t = 0; t < result.body_triangles.rows(); ++t) {
+  for (Eigen::Index t = 0; t < body_triangles.rows(); ++t) {
     double top_y = -std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k)
-      top_y = std::max<double>(top_y, result.body_vertices(result.body_triangles(t, k), 1));
-    if (top_y >= result.head.neck_y)
-      head_triangles.row(head_triangle_count++) = result.body_triangles.row(t);
+      top_y = std::max<double>(top_y, body_vertices(body_triangles(t, k), 1));
+    if (top_y >= neck_y) head_triangles.row(head_triangle_count++) = body_triangles.row(t);
   }
   head_triangles.conservativeResize(head_triangle_count, 3);
   if (head_triangle_count == 0)
     throw Error::bad_input(body_file, "body mesh has no head above the neck");
-  TriangleMeshDistance head_distance(result.body_vertices, head_triangles);
+  return head_triangles;
+}
 
-  // The hair: quads, patches, edge families.
-  QuadRecovery recovered = quads_from_triangles(hair_mesh, params.max_quad_corner_deviation_deg);
-  result.stats.triangles_paired = recovered.triangles_paired;
-  result.stats.triangles_left = recovered.triangles_left;
-  result.hair_mesh = std::move(recovered.mesh);
-  const Points3f& vertices = result.hair_mesh.vertices;
-  MeshPatches patches = mesh_patches(result.hair_mesh);
-  result.face_group = patches.face_patch;
-  std::vector<PatchTopology> topologies(static_cast<size_t>(patches.patch_count()));
-#pragma omp parallel for schedule(dynamic)
-  for (int32_t p = 0; p < patches.patch_count(); ++p)
-    topologies[p] = patch_topology(result.hair_mesh, patches.patch_faces[p]);
-  std::vector<std::vector<int>> along = along_families(topologies, params);
-
-  // Rails of every region, and what they say about their direction.
+/// The rails of every region of every patch (the chains of its along family; short
+/// fragments dropped, closed and draped rails parted), and what they say about their
+/// direction.
+std::vector<RegionRails> region_rails(const Points3f& vertices,
+                                      const std::vector<PatchTopology>& topologies,
+                                      const std::vector<std::vector<int>>& along,
+                                      const TriangleMeshDistance& head_distance,
+                                      const ExtractParams& params, double head_height_m,
+                                      ExtractStats& stats) {
   std::vector<RegionRails> regions;
-  for (int32_t p = 0; p < patches.patch_count(); ++p) {
-    result.stats.family_conflicts += topologies[p].family_conflicts;
+  for (int32_t p = 0; p < static_cast<int32_t>(topologies.size()); ++p) {
+    stats.family_conflicts += topologies[p].family_conflicts;
     for (size_t r = 0; r < topologies[p].regions.size(); ++r) {
       RegionRails region;
       region.patch = p;
@@ -392,16 +373,15 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
         longest = std::max(longest, rail_length(vertices, chain));
       for (const auto& chain : along_family.chains) {
         if (rail_length(vertices, chain) < params.min_rail_length_share * longest) {
-          ++result.stats.fragments_dropped;
+          ++stats.fragments_dropped;
         } else if (chain.size() > 2 && chain.front() == chain.back()) {
           for (auto& half : part_closed_rail(vertices, chain)) region.parted_rails.push_back(half);
-          ++result.stats.rails_parted;
+          ++stats.rails_parted;
         } else if (auto halves = part_draped_rail(
                        vertices, chain, params.parting_min_side_share, params.parting_min_side_drop,
-                       head_distance,
-                       params.parting_min_end_distance_h * result.head.head_height)) {
+                       head_distance, params.parting_min_end_distance_h * head_height_m)) {
           for (auto& half : *halves) region.parted_rails.push_back(half);
-          ++result.stats.rails_parted;
+          ++stats.rails_parted;
         } else {
           region.open_rails.push_back(chain);
         }
@@ -418,22 +398,51 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
         orientation_evidence(vertices, region.open_rails,
                              topologies[p].regions[r].families[along[p][r]], head_distance, params);
   }
+  return regions;
+}
 
-  // Decide directions: confident regions first, then the mesh's conventions for the rest.
-  OrientationThresholds thresholds{params.vertex_order_min_vote, params.scalp_distance_min_slope,
-                                   params.uv_min_growth, params.height_min_slope,
-                                   params.height_min_head_distance_h * result.head.head_height};
+/// Decides every region's direction: confident regions first, then continuation from
+/// decided neighbours, then the mesh's conventions for the rest.
+void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regions,
+                       const OrientationThresholds& thresholds, const ExtractParams& params,
+                       double head_height_m, ExtractStats& stats) {
   MeshConventions conventions = mesh_conventions(regions, thresholds, params);
-  result.stats.vertex_order_trusted = conventions.trust_vertex_order;
-  result.stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
-  decide_by_continuation(
-      vertices, regions,
-      static_cast<float>(params.continuation_radius_h * result.head.head_height));
+  stats.vertex_order_trusted = conventions.trust_vertex_order;
+  stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
+  decide_by_continuation(vertices, regions,
+                         static_cast<float>(params.continuation_radius_h * head_height_m));
   for (RegionRails& region : regions)
     if (!region.decision)
       region.decision = decide_orientation(region.evidence, thresholds, conventions);
+}
 
-  // Strands, group by group.
+/// A patch without usable quads: one strand along its principal axis, directed by the
+/// scalp distance and height of its ends. Returns the polyline and its decision.
+std::pair<Points3f, OrientationDecision> triangle_soup_strand(
+    const PolyMesh& hair_mesh, std::span<const int64_t> faces,
+    const TriangleMeshDistance& head_distance, const OrientationThresholds& thresholds) {
+  Points3f polyline = principal_axis_polyline(hair_mesh, faces);
+  Eigen::Vector3d first = polyline.row(0).cast<double>().transpose();
+  Eigen::Vector3d last = polyline.row(polyline.rows() - 1).cast<double>().transpose();
+  double length = std::max(1e-12, (last - first).norm());
+  OrientationEvidence evidence;
+  evidence.scalp_distance_slope =
+      (head_distance.distance(last) - head_distance.distance(first)) / length;
+  evidence.height_slope = (first.y() - last.y()) / length;
+  OrientationDecision decision =
+      *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
+  if (decision.reverse) polyline = polyline.colwise().reverse().eval();
+  return {std::move(polyline), decision};
+}
+
+/// The strands, group (patch) by group: each region's rails in their decided direction,
+/// or one strand along a patch without usable quads; the group's kind, rule and
+/// confidence (those of its region with the most rails) into `result`.
+void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>& topologies,
+                   const std::vector<std::vector<int>>& along, std::vector<RegionRails>& regions,
+                   const TriangleMeshDistance& head_distance,
+                   const OrientationThresholds& thresholds, ExtractResult& result) {
+  const Points3f& vertices = result.hair_mesh.vertices;
   std::vector<Points3f> polylines;
   std::vector<int32_t> strand_group, strand_rail, source_vertex;
   size_t next_region = 0;
@@ -463,21 +472,12 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
     }
     PatchKind kind = patch_kind(topologies[p], along[p]);
     if (rail_in_patch == 0 || kind == PatchKind::triangle_soup) {
-      // No usable quads: one strand along the patch's principal axis.
       kind = PatchKind::triangle_soup;
-      Points3f polyline = principal_axis_polyline(result.hair_mesh, patches.patch_faces[p]);
-      Eigen::Vector3d first = polyline.row(0).cast<double>().transpose();
-      Eigen::Vector3d last = polyline.row(polyline.rows() - 1).cast<double>().transpose();
-      double length = std::max(1e-12, (last - first).norm());
-      OrientationEvidence evidence;
-      evidence.scalp_distance_slope =
-          (head_distance.distance(last) - head_distance.distance(first)) / length;
-      evidence.height_slope = (first.y() - last.y()) / length;
-      group_decision =
-          *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
-      if (group_decision.reverse) polyline = polyline.colwise().reverse().eval();
-      polylines.push_back(polyline);
+      auto [polyline, decision] =
+          triangle_soup_strand(result.hair_mesh, patches.patch_faces[p], head_distance, thresholds);
+      group_decision = decision;
       source_vertex.insert(source_vertex.end(), static_cast<size_t>(polyline.rows()), -1);
+      polylines.push_back(std::move(polyline));
       strand_group.push_back(p);
       strand_rail.push_back(rail_in_patch++);
     }
@@ -494,10 +494,58 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   result.strands.strand_attributes["rail"] = std::move(strand_rail);
   result.strands.point_attributes["source_vertex"] = std::move(source_vertex);
   check_strand_set(result.strands);
+}
+
+}  // namespace
+
+ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
+                              const std::string& hair_file, const std::string& body_file) {
+  ExtractResult result;
+  MeshCleanup cleanup = clean_mesh(hair_mesh, hair_file);
+  clean_mesh(body_mesh, body_file);
+  hair_mesh.vertices *= static_cast<float>(params.unit_scale);
+  body_mesh.vertices *= static_cast<float>(params.unit_scale);
+  result.stats.degenerate_faces_removed = cleanup.degenerate_faces_removed;
+
+  // The body: head height H, head region, triangles.
+  result.head = head_measures(body_mesh, body_file);
+  if (params.head_height_m > 0) {
+    result.head.head_height = params.head_height_m;
+    result.head.neck_y = result.head.head_top_y - params.head_height_m;
+  }
+  const double head_height_m = result.head.head_height;
+  result.body_vertices = body_mesh.vertices;
+  result.body_triangles = fan_triangulation(body_mesh.face_offsets, body_mesh.face_vertices);
+  TriangleMeshDistance head_distance(
+      result.body_vertices, head_triangles_of(result.body_vertices, result.body_triangles,
+                                              result.head.neck_y, body_file));
+
+  // The hair: quads, patches, edge families.
+  QuadRecovery recovered = quads_from_triangles(hair_mesh, params.max_quad_corner_deviation_deg);
+  result.stats.triangles_paired = recovered.triangles_paired;
+  result.stats.triangles_left = recovered.triangles_left;
+  result.hair_mesh = std::move(recovered.mesh);
+  const Points3f& vertices = result.hair_mesh.vertices;
+  MeshPatches patches = mesh_patches(result.hair_mesh);
+  result.face_group = patches.face_patch;
+  std::vector<PatchTopology> topologies(static_cast<size_t>(patches.patch_count()));
+#pragma omp parallel for schedule(dynamic)
+  for (int32_t p = 0; p < patches.patch_count(); ++p)
+    topologies[p] = patch_topology(result.hair_mesh, patches.patch_faces[p]);
+  std::vector<std::vector<int>> along = along_families(topologies, params);
+
+  // Rails, their directions, and the strands group by group.
+  std::vector<RegionRails> regions =
+      region_rails(vertices, topologies, along, head_distance, params, head_height_m, result.stats);
+  OrientationThresholds thresholds{params.vertex_order_min_vote, params.scalp_distance_min_slope,
+                                   params.uv_min_growth, params.height_min_slope,
+                                   params.height_min_head_distance_h * head_height_m};
+  decide_directions(vertices, regions, thresholds, params, head_height_m, result.stats);
+  group_strands(patches, topologies, along, regions, head_distance, thresholds, result);
 
   result.scalp_triangle =
       scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,
-                      result.hair_mesh, params.scalp_distance_h * result.head.head_height);
+                      result.hair_mesh, params.scalp_distance_h * head_height_m);
   return result;
 }
 

@@ -331,104 +331,121 @@ OrientationField OrientationField::build(const StrandSet& strands,
   for (const auto& offset : stencil) reach = std::max(reach, offset[0]);
   OrientationField field;
   field.voxel_m_ = voxel_m;
+  std::vector<std::array<int64_t, 3>> seed_voxels;
+  for (const Seed& seed : seeds) seed_voxels.push_back(seed.voxel);
+  field.place_box(seed_voxels, reach, max_voxels);
+
+  // The band: every voxel within the stencil of a seed (all inside the box by its margin).
+  const int64_t size_x = field.size_[0], size_xy = field.size_[0] * field.size_[1];
+  std::vector<int64_t> stencil_cells;
+  for (const auto& offset : stencil)
+    stencil_cells.push_back(offset[0] + size_x * offset[1] + size_xy * offset[2]);
+  std::vector<int64_t> seed_cells;
+  std::vector<Eigen::Vector3d> seed_directions;
+  for (const Seed& seed : seeds) {
+    seed_cells.push_back((seed.voxel[0] - field.low_[0]) + size_x * (seed.voxel[1] - field.low_[1]) +
+                         size_xy * (seed.voxel[2] - field.low_[2]));
+    seed_directions.push_back(seed.direction);
+  }
+  field.mark_band(seed_cells, seed_directions, stencil_cells);
+  field.check_band_joined();
+  field.interpolate_unseeded(params);
+  return field;
+}
+
+void OrientationField::place_box(const std::vector<std::array<int64_t, 3>>& seed_voxels, int reach,
+                                 int64_t max_voxels) {
   double box_voxels = 1;
   for (int axis = 0; axis < 3; ++axis) {
-    int64_t low = seeds.front().voxel[axis], high = low;
-    for (const Seed& seed : seeds) {
-      low = std::min(low, seed.voxel[axis]);
-      high = std::max(high, seed.voxel[axis]);
+    int64_t low = seed_voxels.front()[axis], high = low;
+    for (const auto& voxel : seed_voxels) {
+      low = std::min(low, voxel[axis]);
+      high = std::max(high, voxel[axis]);
     }
-    field.low_[axis] = low - reach;
-    field.size_[axis] = high - low + 1 + 2 * reach;
-    box_voxels *= static_cast<double>(field.size_[axis]);
+    low_[axis] = low - reach;
+    size_[axis] = high - low + 1 + 2 * reach;
+    box_voxels *= static_cast<double>(size_[axis]);
   }
   if (box_voxels > static_cast<double>(max_voxels))
     throw Error::usage(fmt::format(
         "orientation field: the band's box of {} x {} x {} voxels of {} m exceeds max_voxels = "
         "{} (raise voxel_m)",
-        field.size_[0], field.size_[1], field.size_[2], voxel_m, max_voxels));
-  const int64_t size_x = field.size_[0], size_xy = field.size_[0] * field.size_[1];
-  const auto cells = static_cast<int64_t>(box_voxels);
-  auto seed_cell = [&](const Seed& seed) {
-    return (seed.voxel[0] - field.low_[0]) + size_x * (seed.voxel[1] - field.low_[1]) +
-           size_xy * (seed.voxel[2] - field.low_[2]);
-  };
+        size_[0], size_[1], size_[2], voxel_m_, max_voxels));
+}
 
-  // The band: every voxel within the stencil of a seed (all inside the box by its margin).
+void OrientationField::mark_band(const std::vector<int64_t>& seed_cells,
+                                 const std::vector<Eigen::Vector3d>& seed_directions,
+                                 const std::vector<int64_t>& stencil_cells) {
+  const int64_t cells = size_[0] * size_[1] * size_[2];
   std::vector<uint8_t> in_band(static_cast<size_t>(cells), 0);
-  std::vector<int64_t> stencil_cells;
-  for (const auto& offset : stencil)
-    stencil_cells.push_back(offset[0] + size_x * offset[1] + size_xy * offset[2]);
-  for (const Seed& seed : seeds) {
-    int64_t centre = seed_cell(seed);
+  for (int64_t centre : seed_cells)
     for (int64_t offset : stencil_cells) in_band[static_cast<size_t>(centre + offset)] = 1;
-  }
 
   // Band voxels numbered in lattice order; seeds are in lattice order too.
-  field.band_index_.assign(static_cast<size_t>(cells), -1);
+  band_index_.assign(static_cast<size_t>(cells), -1);
   for (int64_t cell = 0; cell < cells; ++cell) {
     if (!in_band[static_cast<size_t>(cell)]) continue;
-    field.band_index_[static_cast<size_t>(cell)] = static_cast<int32_t>(field.band_cell_.size());
-    field.band_cell_.push_back(cell);
+    band_index_[static_cast<size_t>(cell)] = static_cast<int32_t>(band_cell_.size());
+    band_cell_.push_back(cell);
   }
-  const auto band = static_cast<size_t>(field.band_cell_.size());
-  field.direction_.assign(band, Eigen::Vector3d::Zero());
-  field.seeded_.assign(band, 0);
-  for (const Seed& seed : seeds) {
-    auto voxel = static_cast<size_t>(field.band_index_[static_cast<size_t>(seed_cell(seed))]);
-    field.seeded_[voxel] = 1;
-    field.direction_[voxel] = seed.direction;
+  const auto band = static_cast<size_t>(band_cell_.size());
+  direction_.assign(band, Eigen::Vector3d::Zero());
+  seeded_.assign(band, 0);
+  for (size_t s = 0; s < seed_cells.size(); ++s) {
+    auto voxel = static_cast<size_t>(band_index_[static_cast<size_t>(seed_cells[s])]);
+    seeded_[voxel] = 1;
+    direction_[voxel] = seed_directions[s];
   }
-  field.seeded_count_ = static_cast<int64_t>(seeds.size());
+  seeded_count_ = static_cast<int64_t>(seed_cells.size());
+}
 
-  // The 6 neighbours of a band voxel that lie in the band, in increasing band order
-  // (-z, -y, -x, +x, +y, +z); -1 for none.
-  auto neighbours = [&](size_t voxel) {
-    int64_t cell = field.band_cell_[voxel];
-    int64_t x = cell % size_x, y = (cell / size_x) % field.size_[1], z = cell / size_xy;
-    std::array<int32_t, 6> result;
-    auto at = [&](bool inside, int64_t neighbour) {
-      return inside ? field.band_index_[static_cast<size_t>(neighbour)] : -1;
-    };
-    result[0] = at(z > 0, cell - size_xy);
-    result[1] = at(y > 0, cell - size_x);
-    result[2] = at(x > 0, cell - 1);
-    result[3] = at(x + 1 < size_x, cell + 1);
-    result[4] = at(y + 1 < field.size_[1], cell + size_x);
-    result[5] = at(z + 1 < field.size_[2], cell + size_xy);
-    return result;
+std::array<int32_t, 6> OrientationField::band_neighbours(size_t voxel) const {
+  const int64_t size_x = size_[0], size_xy = size_[0] * size_[1];
+  int64_t cell = band_cell_[voxel];
+  int64_t x = cell % size_x, y = (cell / size_x) % size_[1], z = cell / size_xy;
+  std::array<int32_t, 6> result;
+  auto at = [&](bool inside, int64_t neighbour) {
+    return inside ? band_index_[static_cast<size_t>(neighbour)] : -1;
   };
+  result[0] = at(z > 0, cell - size_xy);
+  result[1] = at(y > 0, cell - size_x);
+  result[2] = at(x > 0, cell - 1);
+  result[3] = at(x + 1 < size_x, cell + 1);
+  result[4] = at(y + 1 < size_[1], cell + size_x);
+  result[5] = at(z + 1 < size_[2], cell + size_xy);
+  return result;
+}
 
-  // Every band component holds a seed: a band voxel lies within band_m of a seed, and a
-  // monotone lattice path to that seed never moves farther from it. Checked all the same,
-  // since the Laplace system below is singular otherwise.
-  {
-    std::vector<uint8_t> reached(field.seeded_);
-    std::vector<size_t> queue;
-    for (size_t voxel = 0; voxel < band; ++voxel)
-      if (reached[voxel]) queue.push_back(voxel);
-    for (size_t next = 0; next < queue.size(); ++next)
-      for (int32_t neighbour : neighbours(queue[next]))
-        if (neighbour >= 0 && !reached[static_cast<size_t>(neighbour)]) {
-          reached[static_cast<size_t>(neighbour)] = 1;
-          queue.push_back(static_cast<size_t>(neighbour));
-        }
-    if (queue.size() != band)
-      throw Error::runtime("", fmt::format("orientation field: {} band voxels are not joined to "
-                                           "any seed (cannot happen: the band is grown from "
-                                           "the seeds)",
-                                           band - queue.size()));
-  }
+void OrientationField::check_band_joined() const {
+  const size_t band = band_cell_.size();
+  std::vector<uint8_t> reached(seeded_);
+  std::vector<size_t> queue;
+  for (size_t voxel = 0; voxel < band; ++voxel)
+    if (reached[voxel]) queue.push_back(voxel);
+  for (size_t next = 0; next < queue.size(); ++next)
+    for (int32_t neighbour : band_neighbours(queue[next]))
+      if (neighbour >= 0 && !reached[static_cast<size_t>(neighbour)]) {
+        reached[static_cast<size_t>(neighbour)] = 1;
+        queue.push_back(static_cast<size_t>(neighbour));
+      }
+  if (queue.size() != band)
+    throw Error::runtime("", fmt::format("orientation field: {} band voxels are not joined to "
+                                         "any seed (cannot happen: the band is grown from "
+                                         "the seeds)",
+                                         band - queue.size()));
+}
 
-  // The harmonic interpolation: for each unseeded voxel i, sum over band neighbours j of
-  // (x_i - x_j) = 0, seeded neighbours moved to the right-hand side. Unknowns are numbered
-  // in band order, so a voxel's +x, +y, +z neighbours follow it and the lower triangle is
-  // written column by column in order.
+void OrientationField::interpolate_unseeded(const OrientationFieldParams& params) {
+  // For each unseeded voxel i, sum over band neighbours j of (x_i - x_j) = 0, seeded
+  // neighbours moved to the right-hand side. Unknowns are numbered in band order, so a
+  // voxel's +x, +y, +z neighbours follow it and the lower triangle is written column by
+  // column in order.
+  const size_t band = band_cell_.size();
   std::vector<int32_t> unknown(band, -1);
   int32_t unknowns = 0;
   for (size_t voxel = 0; voxel < band; ++voxel)
-    if (!field.seeded_[voxel]) unknown[voxel] = unknowns++;
-  if (unknowns == 0) return field;
+    if (!seeded_[voxel]) unknown[voxel] = unknowns++;
+  if (unknowns == 0) return;
 
   // The full symmetric matrix, column by column; a column's rows ascend as -z, -y, -x,
   // itself, +x, +y, +z, since unknowns are numbered in lattice order.
@@ -438,13 +455,13 @@ OrientationField OrientationField::build(const StrandSet& strands,
   for (size_t voxel = 0; voxel < band; ++voxel) {
     int32_t column = unknown[voxel];
     if (column < 0) continue;
-    std::array<int32_t, 6> around = neighbours(voxel);
+    std::array<int32_t, 6> around = band_neighbours(voxel);
     int degree = 0;
     for (int32_t neighbour : around) {
       if (neighbour < 0) continue;
       ++degree;
-      if (field.seeded_[static_cast<size_t>(neighbour)])
-        rhs.row(column) += field.direction_[static_cast<size_t>(neighbour)].transpose();
+      if (seeded_[static_cast<size_t>(neighbour)])
+        rhs.row(column) += direction_[static_cast<size_t>(neighbour)].transpose();
     }
     if (degree == 0)  // the band is grown in lattice steps from the seeds: cannot happen
       throw Error::runtime("", "orientation field: a band voxel has no band neighbour");
@@ -464,10 +481,8 @@ OrientationField OrientationField::build(const StrandSet& strands,
     // A convex blend of unit seeds: at most 1 long, zero only where seeds cancel.
     Eigen::Vector3d value = solution.row(row).transpose();
     double norm = value.norm();
-    field.direction_[voxel] =
-        norm > 1e-12 ? Eigen::Vector3d(value / norm) : Eigen::Vector3d::Zero();
+    direction_[voxel] = norm > 1e-12 ? Eigen::Vector3d(value / norm) : Eigen::Vector3d::Zero();
   }
-  return field;
 }
 
 bool OrientationField::contains(const Eigen::Vector3d& point_m) const {

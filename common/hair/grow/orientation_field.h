@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -116,6 +117,25 @@ class OrientationField {
  private:
   /// Box cell of a lattice voxel, -1 outside the box.
   int64_t cell_of(double lattice_x, double lattice_y, double lattice_z) const;
+  /// The box: the bounding box of the seeds' lattice voxels grown by `reach` voxels on
+  /// every side. Throws Error::usage if it holds more than `max_voxels`.
+  void place_box(const std::vector<std::array<int64_t, 3>>& seed_voxels, int reach,
+                 int64_t max_voxels);
+  /// The band: every box cell within the stencil (`stencil_cells`, as cell offsets) of a
+  /// seed's cell, numbered in lattice order; the seeds' directions set.
+  void mark_band(const std::vector<int64_t>& seed_cells,
+                 const std::vector<Eigen::Vector3d>& seed_directions,
+                 const std::vector<int64_t>& stencil_cells);
+  /// The 6 neighbours of a band voxel that lie in the band, in increasing band order
+  /// (-z, -y, -x, +x, +y, +z); -1 for none.
+  std::array<int32_t, 6> band_neighbours(size_t voxel) const;
+  /// Every band component holds a seed: a band voxel lies within band_m of a seed, and a
+  /// monotone lattice path to that seed never moves farther from it. Checked all the
+  /// same, since the Laplace system is singular otherwise: throws Error::runtime.
+  void check_band_joined() const;
+  /// The harmonic interpolation of the seeds' directions over the unseeded band voxels
+  /// (the Laplace system, laplace_solution()), normalised.
+  void interpolate_unseeded(const OrientationFieldParams& params);
 
   double voxel_m_ = 0;
   int64_t low_[3] = {0, 0, 0};              ///< lattice index of the box's first voxel

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "hair/core/error.h"
@@ -60,6 +61,321 @@ Vec3 guide_rest_point(const InterpolationGuides& guides, int32_t g, double u) {
   return p0 + f * (p1 - p0);
 }
 
+/// The guides that strands can follow (strand guides, not wisp centres), their anchors
+/// in a k-d tree, their directions at rest, and every guide's rest length.
+struct FollowableGuides {
+  std::vector<int32_t> usable;        ///< guide indices
+  Points3f anchors;                   ///< per usable guide: its first particle
+  std::vector<Vec3> direction;        ///< per usable guide: anchor to tip at rest, unit
+  std::optional<PointIndex> index;    ///< of the anchors
+  std::vector<double> guide_length_m; ///< per guide: rest length from its anchor to its tip
+};
+
+FollowableGuides followable_guides(const InterpolationGuides& guides) {
+  FollowableGuides followable;
+  std::vector<int32_t>& usable = followable.usable;
+  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g) {
+    if (guides.offsets[static_cast<size_t>(g) + 1] - guides.offsets[static_cast<size_t>(g)] < 2)
+      throw Error::runtime("guides", "guide " + std::to_string(g) + " has fewer than 2 particles");
+    if (!guides.is_wisp_centre[static_cast<size_t>(g)]) usable.push_back(g);
+  }
+  followable.anchors.resize(static_cast<Eigen::Index>(usable.size()), 3);
+  for (size_t i = 0; i < usable.size(); ++i) {
+    int32_t g = usable[i];
+    Vec3 first = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g)]);
+    Vec3 last = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g) + 1] - 1);
+    followable.anchors.row(static_cast<Eigen::Index>(i)) = first.cast<float>().transpose();
+    followable.direction.push_back((last - first).normalized());
+  }
+  followable.index.emplace(followable.anchors);
+  followable.guide_length_m.assign(static_cast<size_t>(guides.guide_count()), 0.0);
+  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g)
+    for (int64_t k = guides.offsets[static_cast<size_t>(g)] + 1;
+         k < guides.offsets[static_cast<size_t>(g) + 1]; ++k)
+      followable.guide_length_m[static_cast<size_t>(g)] +=
+          (point_of(guides.rest_points, k) - point_of(guides.rest_points, k - 1)).norm();
+  return followable;
+}
+
+/// A binding of `point_count` points of `strand_count` strands, every strand fixed, with
+/// the guides' rest data copied in.
+StrandBinding empty_binding(int64_t strand_count, int64_t point_count,
+                            const InterpolationGuides& guides) {
+  StrandBinding binding;
+  binding.method.assign(static_cast<size_t>(strand_count), InterpolationMethod::fixed);
+  binding.guides.assign(static_cast<size_t>(strand_count), {-1, -1, -1});
+  binding.weights.assign(static_cast<size_t>(strand_count), {0.0f, 0.0f, 0.0f});
+  binding.held_count.assign(static_cast<size_t>(strand_count), 0);
+  binding.bound_from.assign(static_cast<size_t>(strand_count), 0);
+  binding.interpolated_from.assign(static_cast<size_t>(strand_count), 0);
+  binding.parameter.assign(static_cast<size_t>(point_count), 0.0f);
+  binding.offset_m = Points3f::Zero(point_count, 3);
+  binding.tetrahedron.assign(static_cast<size_t>(point_count), -1);
+  binding.guide_offsets = guides.offsets;
+  binding.guide_rest_points = guides.rest_points;
+  binding.tetrahedron_count = guides.wisp_tetrahedron_offsets.back();
+  binding.bridged.assign(static_cast<size_t>(strand_count), 0);
+  binding.wisp_rest_frames = guides.wisp_rest_frames;
+  if (static_cast<int64_t>(binding.wisp_rest_frames.size()) != 7 * binding.tetrahedron_count)
+    throw Error::runtime("guides", "the wisps' rest frames are not 7 values per tetrahedron");
+  return binding;
+}
+
+/// The wisps' bindings: each bound point's global tetrahedron and its position in that
+/// tetrahedron's frame.
+void bind_wisp_points(const InterpolationGuides& guides, int64_t point_count,
+                      StrandBinding& binding) {
+  for (size_t b = 0; b < guides.binding_point.size(); ++b) {
+    int64_t row = guides.binding_point[b];
+    int32_t wisp = guides.binding_wisp[b];
+    if (row < 0 || row >= point_count || wisp < 0 ||
+        static_cast<size_t>(wisp) + 1 >= guides.wisp_tetrahedron_offsets.size())
+      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
+                                         " names a point or wisp that does not exist");
+    int32_t first = guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp)];
+    int32_t tetrahedron = first + guides.binding_tetrahedron[b];
+    if (guides.binding_tetrahedron[b] < 0 ||
+        tetrahedron >= guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp) + 1])
+      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
+                                         " names a tetrahedron its wisp does not have");
+    binding.tetrahedron[static_cast<size_t>(row)] = tetrahedron;
+    binding.offset_m.row(row) = guides.binding_local_m[b].transpose();
+  }
+}
+
+/// The points of strand `s` between its held points and its wisp (a braided strand),
+/// bridged from the head (the last held point, or the root) to the wisp by arc length.
+void bridge_to_wisp(const StrandSet& strands, int64_t s, StrandBinding& binding) {
+  const auto si = static_cast<size_t>(s);
+  const int64_t begin = strands.offsets[si];
+  const int64_t held = binding.held_count[si], bound_from = binding.bound_from[si];
+  const int64_t from = held > 0 ? held - 1 : 0;
+  std::vector<double> arc(static_cast<size_t>(bound_from - from + 1), 0.0);
+  for (int64_t i = from + 1; i <= bound_from; ++i)
+    arc[static_cast<size_t>(i - from)] =
+        arc[static_cast<size_t>(i - from - 1)] +
+        (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+  const int32_t tetrahedron = binding.tetrahedron[static_cast<size_t>(begin + bound_from)];
+  for (int64_t i = held; i < bound_from; ++i) {
+    const auto row = static_cast<size_t>(begin + i);
+    binding.parameter[row] =
+        arc.back() > 0 ? static_cast<float>(arc[static_cast<size_t>(i - from)] / arc.back())
+                       : 0.0f;
+    binding.offset_m.row(begin + i) = strands.points.row(begin + i);
+    binding.tetrahedron[row] = tetrahedron;
+  }
+  binding.bridged[si] = 1;
+  binding.method[si] = InterpolationMethod::braided;
+}
+
+/// The moving part of one strand to interpolate (points held to bound_from): its anchor
+/// (the last held point, or the root), its cluster (that of its first moving point) and
+/// its arc length from the anchor.
+struct MovingStrand {
+  const StrandSet& strands;
+  int64_t begin = 0, held = 0, bound_from = 0, anchor = 0;
+  Vec3 anchor_m = Vec3::Zero();
+  int32_t cluster = 0;
+  std::vector<double> arc;  ///< from the anchor, per point from it to the tip
+  double length = 0;
+
+  MovingStrand(const StrandSet& strands_in, int64_t s, int64_t held_in, int64_t bound_from_in,
+               int32_t cluster_in)
+      : strands(strands_in),
+        begin(strands_in.offsets[static_cast<size_t>(s)]),
+        held(held_in),
+        bound_from(bound_from_in),
+        anchor(held_in > 0 ? held_in - 1 : 0),
+        anchor_m(point_of(strands_in.points, begin + anchor)),
+        cluster(cluster_in) {
+    const int64_t size = strands.offsets[static_cast<size_t>(s) + 1] - begin;
+    arc.assign(static_cast<size_t>(size - anchor), 0.0);
+    for (int64_t i = anchor + 1; i < size; ++i)
+      arc[static_cast<size_t>(i - anchor)] =
+          arc[static_cast<size_t>(i - anchor - 1)] +
+          (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+    length = arc.back();
+  }
+
+  /// The arc parameter of point i along guides of rest length `guide_m`: a strand as long
+  /// as they are or longer spans them (its tip follows theirs), a shorter one follows
+  /// their first `length` metres (its tip follows the guide's point as far from the
+  /// anchor). Spread over the whole guide, a strand a fifth its length would have each
+  /// point follow a guide point five times as far out, and stretch as the guide bends.
+  double parameter_along(int64_t i, double guide_m) const {
+    const double span = std::max(length, guide_m);
+    return span > 0 ? arc[static_cast<size_t>(i - anchor)] / span : 0.0;
+  }
+
+  /// Mean distance at rest from the moving points to guide g at the same arc parameter:
+  /// the size of the offsets g would have to carry.
+  double mean_offset_m(const InterpolationGuides& guides, const FollowableGuides& followable,
+                       int32_t g) const {
+    double sum = 0;
+    for (int64_t i = held; i < bound_from; ++i)
+      sum += (point_of(strands.points, begin + i) -
+              guide_rest_point(
+                  guides, g, parameter_along(i, followable.guide_length_m[static_cast<size_t>(g)])))
+                 .norm();
+    return sum / static_cast<double>(std::max<int64_t>(1, bound_from - held));
+  }
+};
+
+/// The guides a strand follows and their weights.
+struct GuideChoice {
+  std::array<int32_t, 3> chosen = {-1, -1, -1};
+  std::array<double, 3> weights = {1, 0, 0};
+  bool barycentric = false;
+};
+
+/// Barycentric: the three nearest candidates (`nearest`, indices into followable.usable),
+/// if they are of the strand's cluster, long enough, point alike and make no sliver;
+/// else no choice (nullopt).
+std::optional<GuideChoice> barycentric_choice(const MovingStrand& strand,
+                                              const InterpolationGuides& guides,
+                                              const FollowableGuides& followable,
+                                              const std::vector<int32_t>& nearest,
+                                              const InterpolationParams& params) {
+  if (nearest.size() < 3) return std::nullopt;
+  const std::vector<int32_t>& usable = followable.usable;
+  const double shortest_m = params.min_guide_length_ratio * strand.length;
+  for (size_t k = 0; k < 3; ++k)
+    if (guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] !=
+        strand.cluster)
+      return std::nullopt;
+  for (size_t k = 0; k < 3; ++k)
+    if (!(followable.guide_length_m[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] >=
+          shortest_m))
+      return std::nullopt;
+  for (size_t a = 0; a < 3; ++a)
+    for (size_t b = a + 1; b < 3; ++b)
+      if (followable.direction[static_cast<size_t>(nearest[a])].dot(
+              followable.direction[static_cast<size_t>(nearest[b])]) < params.min_direction_cosine)
+        return std::nullopt;
+  Vec3 a = followable.anchors.row(nearest[0]).cast<double>().transpose();
+  Vec3 b = followable.anchors.row(nearest[1]).cast<double>().transpose();
+  Vec3 c = followable.anchors.row(nearest[2]).cast<double>().transpose();
+  if (triangle_aspect(a, b, c) < params.min_triangle_aspect) return std::nullopt;
+  GuideChoice choice;
+  choice.barycentric = true;
+  choice.weights = clamped_barycentric(strand.anchor_m, a, b, c);
+  for (size_t k = 0; k < 3; ++k) choice.chosen[k] = usable[static_cast<size_t>(nearest[k])];
+  return choice;
+}
+
+/// Clump: of the candidates `nearest`, the guide whose rest shape lies closest to the
+/// strand's (the least mean offset: the nearest root alone can be a short guide that a
+/// long strand would swing around): one of the strand's cluster long enough to follow;
+/// else one long enough of another cluster simulated alike (`simulated_as`); else the best
+/// of the cluster whatever its length; else the nearest guide of the cluster; else the
+/// nearest guide.
+GuideChoice clump_choice(const MovingStrand& strand, const InterpolationGuides& guides,
+                         const FollowableGuides& followable, const std::vector<int32_t>& nearest,
+                         int8_t simulated_as, const InterpolationParams& params) {
+  const std::vector<int32_t>& usable = followable.usable;
+  const double shortest_m = params.min_guide_length_ratio * strand.length;
+  auto long_enough = [&](int32_t g) {
+    return followable.guide_length_m[static_cast<size_t>(g)] >= shortest_m;
+  };
+  std::vector<double> candidate_offset_m(nearest.size(), -1);  // each worked out once
+  auto best_of = [&](auto&& admits) {
+    int32_t found = -1;
+    double best_offset = std::numeric_limits<double>::infinity();
+    for (size_t c = 0; c < nearest.size(); ++c) {
+      const int32_t g = usable[static_cast<size_t>(nearest[c])];
+      if (!admits(g)) continue;
+      if (candidate_offset_m[c] < 0) candidate_offset_m[c] = strand.mean_offset_m(guides, followable, g);
+      if (candidate_offset_m[c] < best_offset) {
+        best_offset = candidate_offset_m[c];
+        found = nearest[c];
+      }
+    }
+    return found;
+  };
+  auto in_cluster = [&](int32_t g) {
+    return guides.cluster[static_cast<size_t>(g)] == strand.cluster;
+  };
+  int32_t best = best_of([&](int32_t g) { return in_cluster(g) && long_enough(g); });
+  if (best < 0)
+    best = best_of([&](int32_t g) {
+      const auto guide_cluster = static_cast<size_t>(guides.cluster[static_cast<size_t>(g)]);
+      return long_enough(g) && guide_cluster < guides.cluster_simulated_style.size() &&
+             guides.cluster_simulated_style[guide_cluster] == simulated_as;
+    });
+  if (best < 0) best = best_of(in_cluster);
+  if (best < 0) {
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < usable.size(); ++i) {
+      if (guides.cluster[static_cast<size_t>(usable[i])] != strand.cluster) continue;
+      double d = (followable.anchors.row(static_cast<Eigen::Index>(i)).cast<double>().transpose() -
+                  strand.anchor_m)
+                     .squaredNorm();
+      if (d < best_distance) {
+        best_distance = d;
+        best = static_cast<int32_t>(i);
+      }
+    }
+  }
+  if (best < 0) best = nearest.front();
+  GuideChoice choice;
+  choice.chosen = {usable[static_cast<size_t>(best)], -1, -1};
+  return choice;
+}
+
+/// Strand s follows `choice`: its method, guides and weights (normalised again in float,
+/// so that they sum to 1 as the frames use them), and each moving point's arc parameter
+/// and rest offset from the weighted guides there, along the guides' weighted length (one
+/// parameter for the three guides of a barycentric strand).
+void follow(const MovingStrand& strand, int64_t s, const GuideChoice& choice,
+            const InterpolationGuides& guides, const FollowableGuides& followable,
+            StrandBinding& binding) {
+  const auto si = static_cast<size_t>(s);
+  const std::array<int32_t, 3>& chosen = choice.chosen;
+  binding.method[si] =
+      choice.barycentric ? InterpolationMethod::barycentric : InterpolationMethod::clump;
+  binding.guides[si] = chosen;
+  for (size_t k = 0; k < 3; ++k) binding.weights[si][k] = static_cast<float>(choice.weights[k]);
+  float sum = binding.weights[si][0] + binding.weights[si][1] + binding.weights[si][2];
+  for (float& weight : binding.weights[si]) weight /= sum;
+
+  double guides_m = 0;
+  for (size_t k = 0; k < 3; ++k)
+    if (chosen[k] >= 0)
+      guides_m += static_cast<double>(binding.weights[si][k]) *
+                  followable.guide_length_m[static_cast<size_t>(chosen[k])];
+  const StrandSet& strands = strand.strands;
+  for (int64_t i = strand.held; i < strand.bound_from; ++i) {
+    auto uf = static_cast<float>(strand.parameter_along(i, guides_m));
+    Vec3 blended = Vec3::Zero();
+    for (size_t k = 0; k < 3; ++k)
+      if (chosen[k] >= 0)
+        blended += static_cast<double>(binding.weights[si][k]) *
+                   guide_rest_point(guides, chosen[k], static_cast<double>(uf));
+    binding.parameter[static_cast<size_t>(strand.begin + i)] = uf;
+    binding.offset_m.row(strand.begin + i) =
+        (point_of(strands.points, strand.begin + i) - blended).cast<float>().transpose();
+  }
+}
+
+/// The interpolated points' runs of every strand (interpolation_kernel.h).
+void find_runs(const StrandSet& strands, StrandBinding& binding) {
+  const int64_t strand_count = strands.strand_count();
+  binding.run_offsets.assign(static_cast<size_t>(strand_count) + 1, 0);
+  binding.run_of_point.assign(static_cast<size_t>(strands.point_count()), 0);
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t begin = strands.offsets[si];
+    const int64_t from = begin + binding.interpolated_from[si];
+    const int64_t to = begin + binding.bound_from[si];
+    if (!binding.bridged[si] && from < to) {
+      const StrandGuides used = strand_guides(binding, s);
+      strand_runs(used.segments.data(), used.count, binding.parameter.data() + from, to - from,
+                  binding.run_of_point.data() + from, binding.run_particles);
+    }
+    binding.run_offsets[si + 1] = static_cast<int64_t>(binding.run_particles.size());
+  }
+}
+
 }  // namespace
 
 const char* interpolation_method_name(InterpolationMethod method) {
@@ -83,66 +399,9 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
       std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
   const int64_t strand_count = strands.strand_count();
   const int64_t point_count = strands.point_count();
-  StrandBinding binding;
-  binding.method.assign(static_cast<size_t>(strand_count), InterpolationMethod::fixed);
-  binding.guides.assign(static_cast<size_t>(strand_count), {-1, -1, -1});
-  binding.weights.assign(static_cast<size_t>(strand_count), {0.0f, 0.0f, 0.0f});
-  binding.held_count.assign(static_cast<size_t>(strand_count), 0);
-  binding.bound_from.assign(static_cast<size_t>(strand_count), 0);
-  binding.interpolated_from.assign(static_cast<size_t>(strand_count), 0);
-  binding.parameter.assign(static_cast<size_t>(point_count), 0.0f);
-  binding.offset_m = Points3f::Zero(point_count, 3);
-  binding.tetrahedron.assign(static_cast<size_t>(point_count), -1);
-  binding.guide_offsets = guides.offsets;
-  binding.guide_rest_points = guides.rest_points;
-  binding.tetrahedron_count = guides.wisp_tetrahedron_offsets.back();
-  binding.bridged.assign(static_cast<size_t>(strand_count), 0);
-  binding.wisp_rest_frames = guides.wisp_rest_frames;
-  if (static_cast<int64_t>(binding.wisp_rest_frames.size()) != 7 * binding.tetrahedron_count)
-    throw Error::runtime("guides", "the wisps' rest frames are not 7 values per tetrahedron");
-
-  // Guides that strands can follow: strand guides with at least two particles.
-  std::vector<int32_t> usable;
-  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g) {
-    if (guides.offsets[static_cast<size_t>(g) + 1] - guides.offsets[static_cast<size_t>(g)] < 2)
-      throw Error::runtime("guides", "guide " + std::to_string(g) + " has fewer than 2 particles");
-    if (!guides.is_wisp_centre[static_cast<size_t>(g)]) usable.push_back(g);
-  }
-  Points3f anchors(static_cast<Eigen::Index>(usable.size()), 3);
-  std::vector<Vec3> direction;
-  for (size_t i = 0; i < usable.size(); ++i) {
-    int32_t g = usable[i];
-    Vec3 first = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g)]);
-    Vec3 last = point_of(guides.rest_points, guides.offsets[static_cast<size_t>(g) + 1] - 1);
-    anchors.row(static_cast<Eigen::Index>(i)) = first.cast<float>().transpose();
-    direction.push_back((last - first).normalized());
-  }
-  PointIndex index(anchors);
-  // Each guide's rest length along its particles, from its anchor to its tip.
-  std::vector<double> guide_length_m(static_cast<size_t>(guides.guide_count()), 0.0);
-  for (int32_t g = 0; g < static_cast<int32_t>(guides.guide_count()); ++g)
-    for (int64_t k = guides.offsets[static_cast<size_t>(g)] + 1;
-         k < guides.offsets[static_cast<size_t>(g) + 1]; ++k)
-      guide_length_m[static_cast<size_t>(g)] +=
-          (point_of(guides.rest_points, k) - point_of(guides.rest_points, k - 1)).norm();
-
-  // Bound points: the wisps' bindings.
-  for (size_t b = 0; b < guides.binding_point.size(); ++b) {
-    int64_t row = guides.binding_point[b];
-    int32_t wisp = guides.binding_wisp[b];
-    if (row < 0 || row >= point_count || wisp < 0 ||
-        static_cast<size_t>(wisp) + 1 >= guides.wisp_tetrahedron_offsets.size())
-      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
-                                         " names a point or wisp that does not exist");
-    int32_t first = guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp)];
-    int32_t tetrahedron = first + guides.binding_tetrahedron[b];
-    if (guides.binding_tetrahedron[b] < 0 ||
-        tetrahedron >= guides.wisp_tetrahedron_offsets[static_cast<size_t>(wisp) + 1])
-      throw Error::runtime("guides", "wisp binding " + std::to_string(b) +
-                                         " names a tetrahedron its wisp does not have");
-    binding.tetrahedron[static_cast<size_t>(row)] = tetrahedron;
-    binding.offset_m.row(row) = guides.binding_local_m[b].transpose();
-  }
+  StrandBinding binding = empty_binding(strand_count, point_count, guides);
+  const FollowableGuides followable = followable_guides(guides);
+  bind_wisp_points(guides, point_count, binding);
 
   const int8_t fixed_style = static_cast<int8_t>(HairStyle::fixed);
   auto style_of_point = [&](int64_t row) {
@@ -182,27 +441,10 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
       continue;
     }
     if (bound_from < size) {
-      // Bridged from the head (the last held point, or the root) to the wisp.
-      const int64_t from = held > 0 ? held - 1 : 0;
-      std::vector<double> arc(static_cast<size_t>(bound_from - from + 1), 0.0);
-      for (int64_t i = from + 1; i <= bound_from; ++i)
-        arc[static_cast<size_t>(i - from)] =
-            arc[static_cast<size_t>(i - from - 1)] +
-            (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
-      const int32_t tetrahedron = binding.tetrahedron[static_cast<size_t>(begin + bound_from)];
-      for (int64_t i = held; i < bound_from; ++i) {
-        const auto row = static_cast<size_t>(begin + i);
-        binding.parameter[row] =
-            arc.back() > 0 ? static_cast<float>(arc[static_cast<size_t>(i - from)] / arc.back())
-                           : 0.0f;
-        binding.offset_m.row(begin + i) = strands.points.row(begin + i);
-        binding.tetrahedron[row] = tetrahedron;
-      }
-      binding.bridged[si] = 1;
-      binding.method[si] = InterpolationMethod::braided;
+      bridge_to_wisp(strands, s, binding);
       continue;
     }
-    if (usable.empty()) {  // nothing to follow: held by the head
+    if (followable.usable.empty()) {  // nothing to follow: held by the head
       binding.held_count[si] = bound_from;
       binding.interpolated_from[si] = bound_from;
       for (int64_t i = held; i < bound_from; ++i)
@@ -211,165 +453,19 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
       continue;
     }
 
-    // The anchor: the last held point, or the root; the cluster of the first moving point.
-    const int64_t anchor = held > 0 ? held - 1 : 0;
-    const Vec3 anchor_m = point_of(strands.points, begin + anchor);
-    const int32_t cluster = point_cluster[static_cast<size_t>(begin + held)];
-    // Arc parameter from the anchor to the tip.
-    std::vector<double> arc(static_cast<size_t>(size - anchor), 0.0);
-    for (int64_t i = anchor + 1; i < size; ++i)
-      arc[static_cast<size_t>(i - anchor)] =
-          arc[static_cast<size_t>(i - anchor - 1)] +
-          (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
-    const double length = arc.back();
-    // The arc parameter along guides of rest length `guide_m`: a strand as long as they
-    // are or longer spans them (its tip follows theirs), a shorter one follows their first
-    // `length` metres (its tip follows the guide's point as far from the anchor). Spread
-    // over the whole guide, a strand a fifth its length would have each point follow a
-    // guide point five times as far out, and stretch as the guide bends.
-    auto parameter_along = [&](int64_t i, double guide_m) {
-      const double span = std::max(length, guide_m);
-      return span > 0 ? arc[static_cast<size_t>(i - anchor)] / span : 0.0;
-    };
-    // Mean distance at rest from the strand's moving points to guide g at the same arc
-    // parameter: the size of the offsets g would have to carry.
-    auto mean_offset_m = [&](int32_t g) {
-      double sum = 0;
-      for (int64_t i = held; i < bound_from; ++i)
-        sum += (point_of(strands.points, begin + i) -
-                guide_rest_point(guides, g,
-                                 parameter_along(i, guide_length_m[static_cast<size_t>(g)])))
-                   .norm();
-      return sum / static_cast<double>(std::max<int64_t>(1, bound_from - held));
-    };
-    std::vector<int32_t> nearest =
-        index.nearest(anchor_m.cast<float>(),
-                      std::min<int>(params.candidate_guides, static_cast<int>(usable.size())));
-    std::array<int32_t, 3> chosen = {-1, -1, -1};
-    std::array<double, 3> weights = {1, 0, 0};
-    bool barycentric = nearest.size() >= 3;
-    for (size_t k = 0; k < 3 && barycentric; ++k)
-      barycentric =
-          guides.cluster[static_cast<size_t>(usable[static_cast<size_t>(nearest[k])])] == cluster;
-    // Long enough to follow.
-    const double shortest_m = params.min_guide_length_ratio * length;
-    auto long_enough = [&](int32_t g) {
-      return guide_length_m[static_cast<size_t>(g)] >= shortest_m;
-    };
-    for (size_t k = 0; k < 3 && barycentric; ++k)
-      barycentric = long_enough(usable[static_cast<size_t>(nearest[k])]);
-    if (barycentric) {
-      for (size_t a = 0; a < 3; ++a)
-        for (size_t b = a + 1; b < 3; ++b)
-          if (direction[static_cast<size_t>(nearest[a])].dot(
-                  direction[static_cast<size_t>(nearest[b])]) < params.min_direction_cosine)
-            barycentric = false;
-    }
-    if (barycentric) {
-      Vec3 a = anchors.row(nearest[0]).cast<double>().transpose();
-      Vec3 b = anchors.row(nearest[1]).cast<double>().transpose();
-      Vec3 c = anchors.row(nearest[2]).cast<double>().transpose();
-      if (triangle_aspect(a, b, c) < params.min_triangle_aspect) {
-        barycentric = false;
-      } else {
-        weights = clamped_barycentric(anchor_m, a, b, c);
-        for (size_t k = 0; k < 3; ++k) chosen[k] = usable[static_cast<size_t>(nearest[k])];
-      }
-    }
-    if (!barycentric) {
-      // Clump: of the candidates, the guide whose rest shape lies closest to the strand's
-      // (the least mean offset: the nearest root alone can be a short guide that a long
-      // strand would swing around): one of the strand's cluster long enough to follow;
-      // else one long enough of another cluster simulated alike; else the best of the
-      // cluster whatever its length; else the nearest guide of the cluster; else the
-      // nearest guide.
-      const int8_t simulated_as = style_of_point(begin + held);
-      std::vector<double> candidate_offset_m(nearest.size(), -1);  // each worked out once
-      auto best_of = [&](auto&& admits) {
-        int32_t found = -1;
-        double best_offset = std::numeric_limits<double>::infinity();
-        for (size_t c = 0; c < nearest.size(); ++c) {
-          const int32_t g = usable[static_cast<size_t>(nearest[c])];
-          if (!admits(g)) continue;
-          if (candidate_offset_m[c] < 0) candidate_offset_m[c] = mean_offset_m(g);
-          if (candidate_offset_m[c] < best_offset) {
-            best_offset = candidate_offset_m[c];
-            found = nearest[c];
-          }
-        }
-        return found;
-      };
-      auto in_cluster = [&](int32_t g) {
-        return guides.cluster[static_cast<size_t>(g)] == cluster;
-      };
-      int32_t best = best_of([&](int32_t g) { return in_cluster(g) && long_enough(g); });
-      if (best < 0)
-        best = best_of([&](int32_t g) {
-          const auto guide_cluster = static_cast<size_t>(guides.cluster[static_cast<size_t>(g)]);
-          return long_enough(g) && guide_cluster < guides.cluster_simulated_style.size() &&
-                 guides.cluster_simulated_style[guide_cluster] == simulated_as;
-        });
-      if (best < 0) best = best_of(in_cluster);
-      if (best < 0) {
-        double best_distance = std::numeric_limits<double>::infinity();
-        for (size_t i = 0; i < usable.size(); ++i) {
-          if (guides.cluster[static_cast<size_t>(usable[i])] != cluster) continue;
-          double d =
-              (anchors.row(static_cast<Eigen::Index>(i)).cast<double>().transpose() - anchor_m)
-                  .squaredNorm();
-          if (d < best_distance) {
-            best_distance = d;
-            best = static_cast<int32_t>(i);
-          }
-        }
-      }
-      if (best < 0) best = nearest.front();
-      chosen = {usable[static_cast<size_t>(best)], -1, -1};
-      weights = {1, 0, 0};
-    }
-    binding.method[si] =
-        barycentric ? InterpolationMethod::barycentric : InterpolationMethod::clump;
-    binding.guides[si] = chosen;
-    for (size_t k = 0; k < 3; ++k) binding.weights[si][k] = static_cast<float>(weights[k]);
-    // Normalised again in float, so the weights sum to 1 as the frames use them.
-    float sum = binding.weights[si][0] + binding.weights[si][1] + binding.weights[si][2];
-    for (float& weight : binding.weights[si]) weight /= sum;
-
-    // The rest offsets from the weighted guides at each point's arc parameter, along the
-    // guides' weighted length (one parameter for the three guides of a barycentric strand).
-    double guides_m = 0;
-    for (size_t k = 0; k < 3; ++k)
-      if (chosen[k] >= 0)
-        guides_m += static_cast<double>(binding.weights[si][k]) *
-                    guide_length_m[static_cast<size_t>(chosen[k])];
-    for (int64_t i = held; i < bound_from; ++i) {
-      auto uf = static_cast<float>(parameter_along(i, guides_m));
-      Vec3 blended = Vec3::Zero();
-      for (size_t k = 0; k < 3; ++k)
-        if (chosen[k] >= 0)
-          blended += static_cast<double>(binding.weights[si][k]) *
-                     guide_rest_point(guides, chosen[k], static_cast<double>(uf));
-      binding.parameter[static_cast<size_t>(begin + i)] = uf;
-      binding.offset_m.row(begin + i) =
-          (point_of(strands.points, begin + i) - blended).cast<float>().transpose();
-    }
+    const MovingStrand moving(strands, s, held, bound_from,
+                              point_cluster[static_cast<size_t>(begin + held)]);
+    std::vector<int32_t> nearest = followable.index->nearest(
+        moving.anchor_m.cast<float>(),
+        std::min<int>(params.candidate_guides, static_cast<int>(followable.usable.size())));
+    std::optional<GuideChoice> choice =
+        barycentric_choice(moving, guides, followable, nearest, params);
+    if (!choice)
+      choice = clump_choice(moving, guides, followable, nearest, style_of_point(begin + held),
+                            params);
+    follow(moving, s, *choice, guides, followable, binding);
   }
-
-  // The interpolated points' runs.
-  binding.run_offsets.assign(static_cast<size_t>(strand_count) + 1, 0);
-  binding.run_of_point.assign(static_cast<size_t>(point_count), 0);
-  for (int64_t s = 0; s < strand_count; ++s) {
-    const auto si = static_cast<size_t>(s);
-    const int64_t begin = strands.offsets[si];
-    const int64_t from = begin + binding.interpolated_from[si];
-    const int64_t to = begin + binding.bound_from[si];
-    if (!binding.bridged[si] && from < to) {
-      const StrandGuides used = strand_guides(binding, s);
-      strand_runs(used.segments.data(), used.count, binding.parameter.data() + from, to - from,
-                  binding.run_of_point.data() + from, binding.run_particles);
-    }
-    binding.run_offsets[si + 1] = static_cast<int64_t>(binding.run_particles.size());
-  }
+  find_runs(strands, binding);
   return binding;
 }
 

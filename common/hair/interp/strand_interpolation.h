@@ -112,6 +112,15 @@ struct StrandBinding {
   Points3f guide_rest_points;           ///< the guides at rest (their segments' rest directions)
 };
 
+/// A strand's used guides (binding.guides without the -1), their segment counts and weights.
+struct StrandGuides {
+  int count = 0;
+  std::array<int32_t, 3> guide = {-1, -1, -1};
+  std::array<float, 3> segments = {0, 0, 0};
+  std::array<float, 3> weight = {0, 0, 0};
+};
+StrandGuides strand_guides(const StrandBinding& binding, int64_t strand);
+
 /// Binds `strands` (grown strands with the point attribute "cluster") to `guides` at
 /// rest. A strand's points from the root that lie in fixed clusters are held by the head;
 /// the points bound to a wisp follow it; the others are interpolated from guides chosen by
@@ -126,15 +135,6 @@ struct StrandBinding {
 /// from moving with the head to moving with that point's tetrahedron (method braided).
 /// Deterministic. Throws Error::usage for parameters out of range and Error::runtime for
 /// guides or bindings that do not fit the strands.
-/// A strand's used guides (binding.guides without the -1), their segment counts and weights.
-struct StrandGuides {
-  int count = 0;
-  std::array<int32_t, 3> guide = {-1, -1, -1};
-  std::array<float, 3> segments = {0, 0, 0};
-  std::array<float, 3> weight = {0, 0, 0};
-};
-StrandGuides strand_guides(const StrandBinding& binding, int64_t strand);
-
 StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,
                            const InterpolationParams& params);
 

@@ -102,6 +102,203 @@ double spring_energy(const LinearSpring& spring) {
   return 0.5 * spring.stiffness * stretch * stretch;
 }
 
+/// The linear system of one step over the free particles (those from `first_free` on,
+/// three unknowns each): its matrix in LAPACK upper band storage, A(i, j) for i <= j at
+/// band[kBandwidth + i - j + j * (kBandwidth + 1)], and its right-hand side.
+class BandSystem {
+ public:
+  BandSystem(std::vector<double>& band, std::vector<double>& rhs, int32_t first_free)
+      : band_(band), rhs_(rhs), first_free_(first_free) {}
+
+  int32_t first_free() const { return first_free_; }
+
+  /// Adds scale * d d^T to the block (qa, qb), qa <= qb: the whole block lies in the
+  /// upper triangle when qa < qb, its upper half when qa == qb. `outer` holds d d^T
+  /// (column-major) of the spring at hand.
+  void add_outer(int32_t qa, int32_t qb, double scale, const Eigen::Matrix3d& outer) {
+    int row0 = 3 * (qa - first_free_), col0 = 3 * (qb - first_free_);
+    for (int c = 0; c < 3; ++c) {
+      int j = col0 + c;
+      double* column = band_.data() + kBandwidth - j + static_cast<ptrdiff_t>(j) * kLdab + row0;
+      const double* outer_column = outer.data() + 3 * c;
+      if (qa == qb) {
+        for (int r = 0; r <= c; ++r) column[r] += scale * outer_column[r];
+      } else {
+        for (int r = 0; r < 3; ++r) column[r] += scale * outer_column[r];
+      }
+    }
+  }
+  /// Adds `value` to the diagonal of particle q's block.
+  void add_diagonal(int32_t q, double value) {
+    for (int r = 0; r < 3; ++r) {
+      int i = 3 * (q - first_free_) + r;
+      band_[static_cast<size_t>(kBandwidth + i * kLdab)] += value;
+    }
+  }
+  void add_rhs(int32_t q, const Vec3& value) {
+    int row0 = 3 * (q - first_free_);
+    for (int r = 0; r < 3; ++r) rhs_[static_cast<size_t>(row0 + r)] += value[r];
+  }
+
+ private:
+  static constexpr int kLdab = kBandwidth + 1;
+  std::vector<double>& band_;
+  std::vector<double>& rhs_;
+  int32_t first_free_;
+};
+
+/// Inertia, drag and the external forces of every free particle: M (1 + dt drag) on the
+/// diagonal, M v + dt M a on the right. External forces act on the hair; ghosts only
+/// carry inertia (weighed down, they would bend a hanging strand sideways).
+void add_inertia(BandSystem& system, const AltitudeStrand& strand, const StrandMaterial& material,
+                 const std::vector<Vec3>& acceleration_m_s2, const Vec3& uniform_acceleration_m_s2,
+                 double dt_s, const std::vector<Vec3>& v) {
+  for (int32_t q = system.first_free(); q < strand.particle_count(); ++q) {
+    auto k = static_cast<size_t>(q);
+    double mass = strand.mass_kg[k];
+    Vec3 acceleration = Vec3::Zero();
+    if (!strand.is_ghost[k]) {
+      acceleration = uniform_acceleration_m_s2;
+      if (!acceleration_m_s2.empty()) acceleration += acceleration_m_s2[k];
+    }
+    system.add_diagonal(q, mass * (1 + dt_s * material.drag_per_s));
+    system.add_rhs(q, mass * v[k] + dt_s * mass * acceleration);
+  }
+}
+
+/// One spring, implicit along its direction: dt (c + dt k) w_a w_b d d^T into the matrix,
+/// -dt k (l - L) w_a d on the right, and, for a spring that reaches kinematic particles,
+/// the rate of its length that their velocities (`known_velocity_sum`: sum of weight
+/// times velocity over them) give.
+void add_spring(BandSystem& system, const LinearSpring& spring, double dt_s,
+                const Vec3* known_velocity_sum) {
+  const int32_t first_free = system.first_free();
+  double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
+  double known_rate = known_velocity_sum ? spring.direction.dot(*known_velocity_sum) : 0.0;
+  const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
+  for (int a = 0; a < spring.count; ++a) {
+    int32_t qa = spring.particle[static_cast<size_t>(a)];
+    double wa = spring.weight[static_cast<size_t>(a)];
+    if (qa >= first_free) {
+      system.add_rhs(qa, (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m) * wa) *
+                             spring.direction);
+      if (known_rate != 0) system.add_rhs(qa, (-implicit * wa * known_rate) * spring.direction);
+    }
+    for (int b = a; b < spring.count; ++b) {
+      int32_t qb = spring.particle[static_cast<size_t>(b)];
+      if (qa < first_free || qb < first_free) continue;
+      double coefficient = implicit * wa * spring.weight[static_cast<size_t>(b)];
+      if (qa <= qb)
+        system.add_outer(qa, qb, coefficient, outer);
+      else
+        system.add_outer(qb, qa, coefficient, outer);
+    }
+  }
+}
+
+/// Every spring of the strand at `x` (anchors excluded) into the system; returns their
+/// elastic energy there, as strand_spring_energy() sums it.
+double add_springs(BandSystem& system, const AltitudeStrand& strand, const StrandMaterial& material,
+                   double dt_s, const std::vector<Vec3>& x, const std::vector<Vec3>& v) {
+  const int32_t first_free = system.first_free();
+  double energy_j = 0;
+  for_each_spring(strand, material, x, [&](const LinearSpring& spring) {
+    energy_j += spring_energy(spring);
+    if (spring.count == 2 && spring.particle[0] >= first_free) {
+      // Most springs: two free particles, weights -1 and 1 (add_spring, unrolled).
+      const int32_t qa = spring.particle[0], qb = spring.particle[1];
+      const double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
+      const Vec3 force =
+          (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m)) * spring.direction;
+      system.add_rhs(qa, -force);
+      system.add_rhs(qb, force);
+      const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
+      system.add_outer(qa, qa, implicit, outer);
+      system.add_outer(qa, qb, -implicit, outer);
+      system.add_outer(qb, qb, implicit, outer);
+      return;
+    }
+    // Sum of weight * velocity over the spring's kinematic particles.
+    Vec3 known = Vec3::Zero();
+    bool any_known = false;
+    for (int a = 0; a < spring.count; ++a) {
+      int32_t qa = spring.particle[static_cast<size_t>(a)];
+      if (qa < first_free) {
+        known += spring.weight[static_cast<size_t>(a)] * v[static_cast<size_t>(qa)];
+        any_known = true;
+      }
+    }
+    add_spring(system, spring, dt_s, any_known ? &known : nullptr);
+  });
+  return energy_j;
+}
+
+/// The springs from a free first particle (a wisp centre's) to its anchors, whose ends
+/// move as the anchors' velocities say.
+void add_anchor_springs(BandSystem& system, const AltitudeStrand& strand,
+                        const StrandMaterial& material, const std::vector<StrandAnchor>& anchors,
+                        double dt_s, const std::vector<Vec3>& x) {
+  double mass = strand.mass_kg[0];
+  double stiffness = material.anchor_stiffness_per_kg * mass;
+  double damping = 2 * material.damping_ratio * std::sqrt(material.anchor_stiffness_per_kg) * mass;
+  LinearSpring linear;
+  linear.count = 1;  // the anchor's end is known
+  linear.particle[0] = 0;
+  linear.weight[0] = 1;
+  linear.stiffness = stiffness;
+  linear.damping = damping;
+  for (const StrandAnchor& anchor : anchors) {
+    Vec3 span = x[0] - anchor.position_m;
+    double length = span.norm();
+    if (!(length > 1e-12)) continue;
+    linear.direction = span / length;
+    linear.length_m = length;
+    linear.rest_length_m = anchor.rest_length_m;
+    Vec3 known = -anchor.velocity_m_s;
+    add_spring(system, linear, dt_s, &known);
+  }
+}
+
+/// Brings hair segment i's tip side `tip_side` back within max_stretch of its rest length
+/// from the segment's start, along the segment.
+void limit_segment(const AltitudeStrand& strand, const StrandMaterial& material,
+                   const std::vector<Vec3>& x, int32_t i, Vec3& tip_side) {
+  Vec3 span = tip_side - x[static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i)])];
+  double length = span.norm();
+  double rest = strand.hair_segment_m[static_cast<size_t>(i)];
+  double limited =
+      std::clamp(length, rest * (1 - material.max_stretch), rest * (1 + material.max_stretch));
+  if (limited != length && length > 1e-12) tip_side += span * (limited / length - 1);
+}
+
+/// Moves the free ghosts within hair segment i by half its tip particle's move
+/// `correction`.
+void move_ghosts_within(const AltitudeStrand& strand, std::vector<Vec3>& x, int32_t i,
+                        const Vec3& correction) {
+  int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+  int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+  for (int32_t q = std::max(inner + 1, strand.kinematic_count); q < outer; ++q)
+    x[static_cast<size_t>(q)] += 0.5 * correction;
+}
+
+/// Strain limiting from the root out: a hair segment out of bounds is brought back by
+/// moving everything beyond it, the ghosts within it by half as much.
+void limit_strain(const AltitudeStrand& strand, const StrandMaterial& material,
+                  std::vector<Vec3>& x) {
+  Vec3 shift = Vec3::Zero();
+  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
+    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
+    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
+    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
+    if (outer < strand.kinematic_count) continue;
+    Vec3& tip_side = x[static_cast<size_t>(outer)];
+    const Vec3 before = tip_side;
+    limit_segment(strand, material, x, i, tip_side);
+    move_ghosts_within(strand, x, i, tip_side - before);
+    shift += tip_side - before;
+  }
+}
+
 /// Brings each free ghost's distances to its two hair neighbours (its edge springs)
 /// within `max_stretch` of their rest lengths, keeping its angle about their segment.
 /// The springs alone do not hold a ghost: linearised along their directions at the start
@@ -193,196 +390,76 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
                          const StrandCollider* collider, double friction) {
   const int32_t first_free = strand.kinematic_count;
   const int32_t count = strand.particle_count();
-  const int n = 3 * (count - first_free);
   std::vector<Vec3>& x = state.position_m;
   std::vector<Vec3>& v = state.velocity_m_s;
-  if (n > 0) {
-    const int ldab = kBandwidth + 1;
-    band_.assign(static_cast<size_t>(ldab) * static_cast<size_t>(n), 0.0);
-    rhs_.assign(static_cast<size_t>(n), 0.0);
-    // A(i, j), i <= j, lives at band_[kd + i - j + j * ldab].
-    // Adds scale * d d^T to the block (qa, qb), qa <= qb: the whole block lies in the
-    // upper triangle when qa < qb, its upper half when qa == qb.
-    // `outer` holds d d^T (column-major) of the spring at hand.
-    auto add_outer = [&](int32_t qa, int32_t qb, double scale, const Eigen::Matrix3d& outer) {
-      int row0 = 3 * (qa - first_free), col0 = 3 * (qb - first_free);
-      for (int c = 0; c < 3; ++c) {
-        int j = col0 + c;
-        double* column = band_.data() + kBandwidth - j + static_cast<ptrdiff_t>(j) * ldab + row0;
-        const double* outer_column = outer.data() + 3 * c;
-        if (qa == qb) {
-          for (int r = 0; r <= c; ++r) column[r] += scale * outer_column[r];
-        } else {
-          for (int r = 0; r < 3; ++r) column[r] += scale * outer_column[r];
-        }
-      }
-    };
-    auto add_rhs = [&](int32_t q, const Vec3& value) {
-      int row0 = 3 * (q - first_free);
-      for (int r = 0; r < 3; ++r) rhs_[static_cast<size_t>(row0 + r)] += value[r];
-    };
-
-    // Inertia, drag and the external forces.
-    for (int32_t q = first_free; q < count; ++q) {
-      auto k = static_cast<size_t>(q);
-      double mass = strand.mass_kg[k];
-      // External forces act on the hair; ghosts only carry inertia (weighed down, they
-      // would bend a hanging strand sideways).
-      Vec3 acceleration = Vec3::Zero();
-      if (!strand.is_ghost[k]) {
-        acceleration = uniform_acceleration_m_s2;
-        if (!acceleration_m_s2.empty()) acceleration += acceleration_m_s2[k];
-      }
-      double diagonal = mass * (1 + dt_s * material.drag_per_s);
-      for (int r = 0; r < 3; ++r) {
-        int i = 3 * (q - first_free) + r;
-        band_[static_cast<size_t>(kBandwidth + i * ldab)] += diagonal;
-      }
-      add_rhs(q, mass * v[k] + dt_s * mass * acceleration);
-    }
-
-    // Springs.
-    auto add_spring = [&](const LinearSpring& spring, const Vec3* known_velocity_sum) {
-      double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
-      // Rate of the length from the known (kinematic) particles' velocities.
-      double known_rate = known_velocity_sum ? spring.direction.dot(*known_velocity_sum) : 0.0;
-      const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
-      for (int a = 0; a < spring.count; ++a) {
-        int32_t qa = spring.particle[static_cast<size_t>(a)];
-        double wa = spring.weight[static_cast<size_t>(a)];
-        if (qa >= first_free) {
-          add_rhs(qa, (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m) * wa) *
-                          spring.direction);
-          if (known_rate != 0) add_rhs(qa, (-implicit * wa * known_rate) * spring.direction);
-        }
-        for (int b = a; b < spring.count; ++b) {
-          int32_t qb = spring.particle[static_cast<size_t>(b)];
-          if (qa < first_free || qb < first_free) continue;
-          double coefficient = implicit * wa * spring.weight[static_cast<size_t>(b)];
-          if (qa <= qb)
-            add_outer(qa, qb, coefficient, outer);
-          else
-            add_outer(qb, qa, coefficient, outer);
-        }
-      }
-    };
-    start_spring_energy_j_ = 0;
-    for_each_spring(strand, material, x, [&](const LinearSpring& spring) {
-      start_spring_energy_j_ += spring_energy(spring);
-      if (spring.count == 2 && spring.particle[0] >= first_free) {
-        // Most springs: two free particles, weights -1 and 1 (add_spring, unrolled).
-        const int32_t qa = spring.particle[0], qb = spring.particle[1];
-        const double implicit = dt_s * (spring.damping + dt_s * spring.stiffness);
-        const Vec3 force = (-dt_s * spring.stiffness * (spring.length_m - spring.rest_length_m)) *
-                           spring.direction;
-        add_rhs(qa, -force);
-        add_rhs(qb, force);
-        const Eigen::Matrix3d outer = spring.direction * spring.direction.transpose();
-        add_outer(qa, qa, implicit, outer);
-        add_outer(qa, qb, -implicit, outer);
-        add_outer(qb, qb, implicit, outer);
-        return;
-      }
-      // Sum of weight * velocity over the spring's kinematic particles.
-      Vec3 known = Vec3::Zero();
-      bool any_known = false;
-      for (int a = 0; a < spring.count; ++a) {
-        int32_t qa = spring.particle[static_cast<size_t>(a)];
-        if (qa < first_free) {
-          known += spring.weight[static_cast<size_t>(a)] * v[static_cast<size_t>(qa)];
-          any_known = true;
-        }
-      }
-      add_spring(spring, any_known ? &known : nullptr);
-    });
-    if (first_free == 0) {
-      double mass = strand.mass_kg[0];
-      double stiffness = material.anchor_stiffness_per_kg * mass;
-      double damping =
-          2 * material.damping_ratio * std::sqrt(material.anchor_stiffness_per_kg) * mass;
-      LinearSpring linear;
-      linear.count = 1;  // the anchor's end is known
-      linear.particle[0] = 0;
-      linear.weight[0] = 1;
-      linear.stiffness = stiffness;
-      linear.damping = damping;
-      for (const StrandAnchor& anchor : anchors) {
-        Vec3 span = x[0] - anchor.position_m;
-        double length = span.norm();
-        if (!(length > 1e-12)) continue;
-        linear.direction = span / length;
-        linear.length_m = length;
-        linear.rest_length_m = anchor.rest_length_m;
-        Vec3 known = -anchor.velocity_m_s;
-        add_spring(linear, &known);
-      }
-    }
-
-    int info = solve_banded_spd(band_, rhs_, n, kBandwidth);
-    if (info != 0)
-      throw std::runtime_error("strand step: band matrix not positive definite (minor " +
-                               std::to_string(info) + ")");
-    for (int32_t q = first_free; q < count; ++q) {
-      int row0 = 3 * (q - first_free);
-      v[static_cast<size_t>(q)] =
-          Vec3(rhs_[static_cast<size_t>(row0)], rhs_[static_cast<size_t>(row0 + 1)],
-               rhs_[static_cast<size_t>(row0 + 2)]);
-    }
-  } else {
+  if (count > first_free)
+    solve_velocities(strand, material, acceleration_m_s2, uniform_acceleration_m_s2, anchors, dt_s,
+                     state);
+  else
     start_spring_energy_j_ = strand_spring_energy(strand, material, x);
-  }
 
   // Positions, then two passes over the hair segments from the root out.
   //  1. Strain limiting: a segment out of bounds is brought back by moving everything
   //     beyond it (so the rest of the strand keeps its shape), the ghosts beside it by
   //     half as much. The velocities become (x' - x) / dt: inextensibility is motion.
-  //  2. The body: each hair particle is pushed out, its segment brought back to length
-  //     and the two alternated (three rounds), with Coulomb friction on its displacement
-  //     along the surface. These moves are geometry, not motion: they leave the
-  //     velocities alone, but for the particles that touched, whose velocity relative to
-  //     the surface loses its normal part. (Counted as motion, a push out of the body
-  //     flings the rest of the strand, and hair on the shoulders never comes to rest.)
+  //  2. The body (collide_with_body): each hair particle is pushed out, its segment
+  //     brought back to length and the two alternated (three rounds), with Coulomb
+  //     friction on its displacement along the surface. These moves are geometry, not
+  //     motion: they leave the velocities alone, but for the particles that touched, whose
+  //     velocity relative to the surface loses its normal part. (Counted as motion, a push
+  //     out of the body flings the rest of the strand, and hair on the shoulders never
+  //     comes to rest.)
   start_.assign(x.begin(), x.end());
-  const std::vector<Vec3>& start = start_;
   for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
-  auto limit = [&](int32_t i, Vec3& tip_side) {
-    Vec3 span = tip_side - x[static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i)])];
-    double length = span.norm();
-    double rest = strand.hair_segment_m[static_cast<size_t>(i)];
-    double limited =
-        std::clamp(length, rest * (1 - material.max_stretch), rest * (1 + material.max_stretch));
-    if (limited != length && length > 1e-12) tip_side += span * (limited / length - 1);
-  };
-  // Moves the particles after hair particle i's segment start by `shift`, and the ghosts
-  // within the segment by the share `correction` of its tip particle's move.
-  auto move_segment = [&](int32_t i, const Vec3& correction) {
-    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
-    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
-    for (int32_t q = std::max(inner + 1, first_free); q < outer; ++q)
-      x[static_cast<size_t>(q)] += 0.5 * correction;
-  };
-  Vec3 shift = Vec3::Zero();
-  for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
-    int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
-    int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
-    for (int32_t q = inner + 1; q <= outer; ++q) x[static_cast<size_t>(q)] += shift;
-    if (outer < first_free) continue;
-    Vec3& tip_side = x[static_cast<size_t>(outer)];
-    const Vec3 before = tip_side;
-    limit(i, tip_side);
-    move_segment(i, tip_side - before);
-    shift += tip_side - before;
-  }
+  limit_strain(strand, material, x);
   limit_ghosts(strand, material, x);
   for (int32_t q = first_free; q < count; ++q) {
     auto k = static_cast<size_t>(q);
-    v[k] = (x[k] - start[k]) / dt_s;
+    v[k] = (x[k] - start_[k]) / dt_s;
   }
-  if (!collider) return;
+  if (collider) collide_with_body(strand, material, *collider, friction, dt_s, state);
+}
 
+void StrandStepper::solve_velocities(const AltitudeStrand& strand, const StrandMaterial& material,
+                                     const std::vector<Vec3>& acceleration_m_s2,
+                                     const Vec3& uniform_acceleration_m_s2,
+                                     const std::vector<StrandAnchor>& anchors, double dt_s,
+                                     StrandState& state) {
+  const int32_t first_free = strand.kinematic_count;
+  const int32_t count = strand.particle_count();
+  const int n = 3 * (count - first_free);
+  const std::vector<Vec3>& x = state.position_m;
+  std::vector<Vec3>& v = state.velocity_m_s;
+  band_.assign(static_cast<size_t>(kBandwidth + 1) * static_cast<size_t>(n), 0.0);
+  rhs_.assign(static_cast<size_t>(n), 0.0);
+  BandSystem system(band_, rhs_, first_free);
+  add_inertia(system, strand, material, acceleration_m_s2, uniform_acceleration_m_s2, dt_s, v);
+  start_spring_energy_j_ = add_springs(system, strand, material, dt_s, x, v);
+  if (first_free == 0) add_anchor_springs(system, strand, material, anchors, dt_s, x);
+
+  int info = solve_banded_spd(band_, rhs_, n, kBandwidth);
+  if (info != 0)
+    throw std::runtime_error("strand step: band matrix not positive definite (minor " +
+                             std::to_string(info) + ")");
+  for (int32_t q = first_free; q < count; ++q) {
+    int row0 = 3 * (q - first_free);
+    v[static_cast<size_t>(q)] =
+        Vec3(rhs_[static_cast<size_t>(row0)], rhs_[static_cast<size_t>(row0 + 1)],
+             rhs_[static_cast<size_t>(row0 + 2)]);
+  }
+}
+
+void StrandStepper::collide_with_body(const AltitudeStrand& strand, const StrandMaterial& material,
+                                      const StrandCollider& collider, double friction, double dt_s,
+                                      StrandState& state) {
+  const int32_t first_free = strand.kinematic_count;
+  const int32_t count = strand.particle_count();
+  std::vector<Vec3>& x = state.position_m;
+  std::vector<Vec3>& v = state.velocity_m_s;
+  const std::vector<Vec3>& start = start_;
   after_limits_.assign(x.begin(), x.end());
   contacts_.clear();
-  shift = Vec3::Zero();
+  Vec3 shift = Vec3::Zero();
   for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
     int32_t inner = strand.hair_particle[static_cast<size_t>(i)];
     int32_t outer = strand.hair_particle[static_cast<size_t>(i) + 1];
@@ -393,10 +470,10 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     Contact contact{outer, Vec3::Zero(), Vec3::Zero(), 0};
     bool touched = false;
     for (int round = 0; round < 3; ++round) {
-      if (round > 0) limit(i, tip_side);
+      if (round > 0) limit_segment(strand, material, x, i, tip_side);
       Vec3 moved = tip_side;
-      if (!collider->collide(moved, start[static_cast<size_t>(outer)], contact.normal,
-                             contact.surface_velocity_m_s))
+      if (!collider.collide(moved, start[static_cast<size_t>(outer)], contact.normal,
+                            contact.surface_velocity_m_s))
         break;
       contact.moved_m += (moved - tip_side).norm();
       tip_side = moved;
@@ -413,10 +490,10 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
       // Where the body and the length still disagree (a body part sweeping through the
       // hair faster than a step resolves), the length wins: a particle left inside for
       // a step is hidden by the body, a stretched strand is not.
-      limit(i, tip_side);
+      limit_segment(strand, material, x, i, tip_side);
       contacts_.push_back(contact);
     }
-    move_segment(i, tip_side - before);
+    move_ghosts_within(strand, x, i, tip_side - before);
     shift += tip_side - before;
   }
   if (!contacts_.empty()) limit_ghosts(strand, material, x);  // else nothing moved

@@ -5,7 +5,7 @@
 // strain limiting of the hair segments and of the ghosts' edges. The solve is stable
 // whatever the stiffness and the time step as a linear system; the strain limiting keeps
 // what its linearisation misses (motion across the springs) bounded
-// (tests/unit/test_simulation_stress.cpp).
+// (tests/unit/sim/test_simulation_stress.cpp).
 
 #include <Eigen/Core>
 #include <vector>
@@ -114,6 +114,17 @@ class StrandStepper {
   double start_spring_energy_j() const { return start_spring_energy_j_; }
 
  private:
+  /// The implicit system of the step over the free particles, solved: their velocities.
+  void solve_velocities(const AltitudeStrand& strand, const StrandMaterial& material,
+                        const std::vector<Eigen::Vector3d>& acceleration_m_s2,
+                        const Eigen::Vector3d& uniform_acceleration_m_s2,
+                        const std::vector<StrandAnchor>& anchors, double dt_s,
+                        StrandState& state);
+  /// The body's pass over the hair segments after the strain limiting (see step()).
+  void collide_with_body(const AltitudeStrand& strand, const StrandMaterial& material,
+                         const StrandCollider& collider, double friction, double dt_s,
+                         StrandState& state);
+
   double start_spring_energy_j_ = 0;
   std::vector<double> band_;  ///< LAPACK upper band storage, column-major
   std::vector<double> rhs_;
