@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
     hair::PolyMesh body_mesh = hair::read_mesh(body_path, params.reader());
     hair::ExtractResult result = hair::extract_strands(std::move(hair_mesh), std::move(body_mesh),
                                                        params.extract, hair_path, body_path);
+    result.painted_flow =
+        hair::painted_flow(result.hair_mesh, params.extract.painted_flow, hair_path);
     const hair::ExtractStats& stats = result.stats;
     const auto scalp_triangles =
         std::count(result.scalp_triangle.begin(), result.scalp_triangle.end(), 1);
@@ -39,6 +41,17 @@ int main(int argc, char** argv) {
         "height {}, parting {}",
         hair_path, stats.groups_by_rule[0], stats.groups_by_rule[1], stats.groups_by_rule[2],
         stats.groups_by_rule[3], stats.groups_by_rule[4], stats.groups_by_rule[5]);
+    if (const int64_t painted = result.painted_flow.painted_face_count(); painted > 0) {
+      int64_t segments = 0;
+      const double along = hair::painted_flow_agreement(
+          result.hair_mesh, result.painted_flow, result.strands, hair::kClearFlowCoherence,
+          hair::kFlowAgreementAngleDeg, 0.1 * result.head.head_height, segments);
+      spdlog::info(
+          "{}: painted flow on {} of {} faces; {:.1f}% of {} input strand segments run along "
+          "it (within {} degrees, where it is clear)",
+          hair_path, painted, result.hair_mesh.face_count(), 100 * along, segments,
+          hair::kFlowAgreementAngleDeg);
+    }
     if (scalp_triangles == 0)
       spdlog::warn(
           "{}: the hair mesh does not reach the head of {}: no scalp (wrong body, or "

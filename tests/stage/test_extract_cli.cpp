@@ -144,7 +144,7 @@ class ExtractCli : public ::testing::Test {
     EXPECT_EQ(inspect.exit_code, 0) << inspect.out << inspect.err;
     const std::vector<std::string> report = text_lines(inspect.out);
     ASSERT_FALSE(report.empty());
-    EXPECT_EQ(report.back(), "valid: hairstyle.extract v1");
+    EXPECT_EQ(report.back(), "valid: hairstyle.extract v2");
     EXPECT_EQ(group_count(directory_ / "out.h5"), expected_groups);
   }
 
@@ -230,6 +230,57 @@ TEST_F(ExtractCli, FailureLeavesExistingOutputUntouched) {
 
 TEST_F(ExtractCli, SampleBraid) {
   expect_valid_extract(kSamples / "hair" / "braid01.obj", kSampleBody, 87);
+}
+
+/// Faces of an extract.h5 with a painted flow (coherence above zero).
+int64_t painted_faces(const fs::path& extract_file) {
+  const hair::h5::File file = hair::h5::File::open_read_only(extract_file);
+  const std::vector<float> coherence =
+      hair::h5::read_vector<float>(file, "/mesh/face_flow_coherence");
+  return std::count_if(coherence.begin(), coherence.end(), [](float c) { return c > 0; });
+}
+
+// The sample's OBJ names its MTL, and the MTL its painted texture: extract reads the flow.
+TEST_F(ExtractCli, SampleHasAPaintedFlow) {
+  expect_valid_extract(kSamples / "hair" / "long01.obj", kSampleBody, 18);
+  EXPECT_GT(painted_faces(directory_ / "out.h5"), 1900);  // of 2054
+}
+
+// A texture that is missing, empty or not an image: one warning naming it, and the
+// stage goes on as for a mesh without texture (exit 0, valid output, no flow).
+TEST_F(ExtractCli, BrokenTextureIsAWarningNotAFailure) {
+  const std::string cards = two_hair_cards_obj();
+  std::string obj = "mtllib cards.mtl\nusemtl hair\n";
+  // Texture coordinates: u across each card, v down it.
+  for (int card = 0; card < 2; ++card)
+    for (int row = 0; row < 9; ++row)
+      for (int side = 0; side < 2; ++side) obj += "vt " + std::to_string(side) + " " +
+                                                 std::to_string(1 - row / 8.0) + "\n";
+  std::istringstream lines(cards);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("f ", 0) == 0) {  // f a b c d -> f a/a b/b c/c d/d
+      std::istringstream words(line.substr(2));
+      line = "f";
+      for (std::string index; words >> index;) line += " " + index + "/" + index;
+    }
+    obj += line + "\n";
+  }
+  input("cards.obj", obj);
+  for (const char* texture : {"missing.png", "empty.png", "words.png"}) {
+    input("cards.mtl", std::string("newmtl hair\nmap_Kd ") + texture + "\n");
+    input("empty.png", "");
+    input("words.png", "this is not a picture\n");
+    const CommandResult result = extract({"cards.obj", "--body", body_, "--unit_scale", "0.1",
+                                          "-o", "out.h5", "--threads", "1"});
+    ASSERT_EQ(result.exit_code, 0) << texture << ": " << describe(result);
+    int warnings = 0;
+    for (const std::string& line : text_lines(result.err))
+      if (line.find("warning") != std::string::npos && line.find(texture) != std::string::npos)
+        ++warnings;
+    EXPECT_EQ(warnings, 1) << texture << ": " << result.err;
+    EXPECT_EQ(painted_faces(directory_ / "out.h5"), 0) << texture;
+    EXPECT_EQ(group_count(directory_ / "out.h5"), 2) << texture;
+  }
 }
 
 // --reproducible: same inputs and parameters give byte-identical files, whatever the

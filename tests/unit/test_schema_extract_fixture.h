@@ -20,7 +20,7 @@ inline void remove_object(h5::File& file, const std::string& path) {
   ASSERT_GE(H5Ldelete(file.id(), path.c_str(), H5P_DEFAULT), 0) << path;
 }
 
-/// Writes a small file that conforms to hairstyle.extract v1 (2 groups, 3 strands of 2,
+/// Writes a small file that conforms to hairstyle.extract v2 (2 groups, 3 strands of 2,
 /// 3 and 2 points, a hair mesh of 8 vertices and 3 faces, a body of 4 vertices and 2
 /// triangles), then lets `tamper` change it; the file is named "extract.h5" in errors.
 inline void write_extract_file(const std::filesystem::path& path,
@@ -63,6 +63,9 @@ inline void write_extract_file(const std::filesystem::path& path,
   write_vector<int64_t>(file, "/mesh/face_offsets", {0, 4, 8, 11});
   write_vector<int32_t>(file, "/mesh/face_vertices", {0, 1, 2, 3, 2, 3, 4, 5, 5, 6, 7});
   write_vector<int32_t>(file, "/mesh/face_group", {0, 0, 1});
+  write_dataset<float>(file, "/mesh/face_flow", std::vector<float>(9, 0.0f), {3, 3});
+  write_vector<float>(file, "/mesh/face_flow_coherence", {0, 0, 0});
+  write_vector<float>(file, "/mesh/face_flow_alpha_fall", {0, 0, 0});
 
   write_dataset<float>(file, "/body/vertices", std::vector<float>(12, 0.25f), {4, 3});
   write_dataset<int32_t>(file, "/body/triangles", {0, 1, 2, 0, 2, 3}, {2, 3});

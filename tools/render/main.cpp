@@ -186,7 +186,7 @@ int main(int argc, char** argv) {
   app.add_option("--frame", frame,
                  "frames.h5: the frame of the simulation to draw (default: the file's middle one)");
   app.add_option("--color-by", colouring,
-                 "extract.h5: group (default), direction, rule or kind; clusters.h5: cluster "
+                 "extract.h5: group (default), direction, rule, kind or flow (along the painted flow); clusters.h5: cluster "
                  "(default, the final clusters) or before_split (as spectral clustering found "
                  "them); strands.h5: cluster (default), rule (how each segment was grown) or "
                  "direction; frames.h5: style (default) or cluster. types.h5 is coloured by type, "

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "hair/core/strand_set.h"
+#include "hair/extract/painted_flow.h"
 #include "hair/extract/strand_orientation.h"
 #include "hair/geom/triangle_mesh_distance.h"
 #include "hair/mesh/body_measures.h"
@@ -51,6 +52,8 @@ struct ExtractParams {
   /// Body triangles above the neck within this distance of the hair mesh, as a
   /// fraction of H, form the scalp.
   double scalp_distance_h = 0.06;
+  /// How the painted flow is read off the mesh's textures (painted_flow.h).
+  PaintedFlowParams painted_flow;
 };
 
 /// How the along family of a quad region was chosen.
@@ -83,6 +86,10 @@ struct ExtractResult {
 
   PolyMesh hair_mesh;               ///< cleaned, scaled, triangles paired into quads
   std::vector<int32_t> face_group;  ///< #faces of hair_mesh
+  /// The flow painted in the mesh's textures, per face of hair_mesh (painted_flow(); all
+  /// zero for a mesh without textures). extract_strands() leaves it empty: it reads no
+  /// file; the stage fills it.
+  PaintedFlow painted_flow;
 
   Points3f body_vertices;               ///< #body vertices x 3
   Triangles3i body_triangles;           ///< #body triangles x 3

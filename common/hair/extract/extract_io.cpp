@@ -47,6 +47,18 @@ void write_extract_file(h5::File& file, const ExtractResult& result, const Extra
   h5::write_vector(file, "/mesh/face_vertices", mesh.face_vertices);
   h5::write_vector(file, "/mesh/face_group", result.face_group);
   if (mesh.has_uv()) h5::write_matrix(file, "/mesh/corner_uv", mesh.corner_uv);
+  const PaintedFlow& flow = result.painted_flow;
+  const auto faces = static_cast<size_t>(mesh.face_count());
+  Points3f face_flow = Points3f::Zero(mesh.face_count(), 3);
+  std::vector<float> coherence(faces, 0.0f), alpha_fall(faces, 0.0f);
+  if (flow.direction.size() == faces) {  // extract_strands() alone leaves it empty
+    for (size_t f = 0; f < faces; ++f) face_flow.row(static_cast<Eigen::Index>(f)) = flow.direction[f].transpose();
+    coherence = flow.coherence;
+    alpha_fall = flow.alpha_fall;
+  }
+  h5::write_matrix(file, "/mesh/face_flow", face_flow);
+  h5::write_vector(file, "/mesh/face_flow_coherence", coherence);
+  h5::write_vector(file, "/mesh/face_flow_alpha_fall", alpha_fall);
 
   h5::write_matrix(file, "/body/vertices", result.body_vertices);
   h5::write_matrix(file, "/body/triangles", result.body_triangles);
@@ -60,6 +72,20 @@ ExtractedBody read_extracted_body(const h5::File& extract) {
   body.triangles = h5::read_matrix<int32_t, 3>(extract, "/body/triangles");
   body.scalp_triangle = h5::read_vector<uint8_t>(extract, "/body/scalp_triangle");
   return body;
+}
+
+ExtractedPaint read_extracted_paint(const h5::File& extract) {
+  h5::require_schema(extract, kExtractSchema);
+  ExtractedPaint paint;
+  paint.mesh.vertices = h5::read_matrix<float, 3>(extract, "/mesh/vertices");
+  paint.mesh.face_offsets = h5::read_vector<int64_t>(extract, "/mesh/face_offsets");
+  paint.mesh.face_vertices = h5::read_vector<int32_t>(extract, "/mesh/face_vertices");
+  Points3f direction = h5::read_matrix<float, 3>(extract, "/mesh/face_flow");
+  for (Eigen::Index f = 0; f < direction.rows(); ++f)
+    paint.flow.direction.emplace_back(direction.row(f).transpose());
+  paint.flow.coherence = h5::read_vector<float>(extract, "/mesh/face_flow_coherence");
+  paint.flow.alpha_fall = h5::read_vector<float>(extract, "/mesh/face_flow_alpha_fall");
+  return paint;
 }
 
 }  // namespace hair

@@ -27,4 +27,12 @@ struct ExtractedBody {
 /// Reads /body of extract.h5 after checking the file's schema.
 ExtractedBody read_extracted_body(const h5::File& extract);
 
+/// The hair mesh of extract.h5 (vertices and faces; no texture coordinates or materials)
+/// with the painted flow of its faces, after checking the file's schema.
+struct ExtractedPaint {
+  PolyMesh mesh;
+  PaintedFlow flow;
+};
+ExtractedPaint read_extracted_paint(const h5::File& extract);
+
 }  // namespace hair

@@ -63,6 +63,18 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "body triangles above the neck within this distance of the hair mesh, in H, "
              "form the scalp",
              ParamRange::above(0));
+  params.add("flow_min_alpha", p.painted_flow.min_alpha,
+             "painted flow: texels with at least this alpha are painted hair",
+             ParamRange::closed(0, 1));
+  params.add("flow_window_px", p.painted_flow.window_px,
+             "painted flow: Gaussian window of the texture's structure tensor, texels",
+             ParamRange::above(0));
+  params.add("flow_samples_per_side", p.painted_flow.samples_per_side,
+             "painted flow: texture samples per side of each triangle of a face",
+             ParamRange::closed(1, 16));
+  params.add("flow_min_painted_share", p.painted_flow.min_painted_share,
+             "painted flow: share of a face's samples that must be painted for it to have a flow",
+             ParamRange::closed(0, 1));
 }
 
 }  // namespace hair

@@ -28,6 +28,7 @@ MeshCleanup clean_mesh(PolyMesh& mesh, const std::string& file) {
   MeshCleanup cleanup;
   PolyMesh cleaned;
   cleaned.vertices = std::move(mesh.vertices);
+  cleaned.materials = std::move(mesh.materials);
   std::vector<float> uv;
   std::vector<int32_t> face;
   std::vector<int64_t> corners;
@@ -51,6 +52,7 @@ MeshCleanup clean_mesh(PolyMesh& mesh, const std::string& file) {
       continue;
     }
     cleaned.append_face(face);
+    if (mesh.has_materials()) cleaned.face_material.push_back(mesh.face_material[f]);
     if (mesh.has_uv())
       for (int64_t corner : corners) {
         uv.push_back(mesh.corner_uv(corner, 0));

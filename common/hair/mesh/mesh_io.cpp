@@ -9,6 +9,8 @@
 #include <map>
 #include <tuple>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "hair/core/error.h"
 
 namespace hair {
@@ -21,10 +23,60 @@ std::string lowercase_extension(const std::filesystem::path& path) {
   return extension;
 }
 
+/// A material's first texture of `type`: an image embedded in the scene (its encoded
+/// bytes; raw texels are encoded as PNG), or a file resolved against `folder`.
+MaterialImage material_image(const aiScene& scene, const aiMaterial& material, aiTextureType type,
+                             const std::filesystem::path& folder) {
+  MaterialImage image;
+  aiString name;
+  if (material.GetTextureCount(type) == 0 || material.GetTexture(type, 0, &name) != AI_SUCCESS ||
+      name.length == 0)
+    return image;
+  if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
+    image.path = folder / ("embedded:" + std::string(name.C_Str()));
+    if (embedded->mHeight == 0) {  // compressed (PNG, JPEG, ...): mWidth bytes
+      const auto* bytes = reinterpret_cast<const uint8_t*>(embedded->pcData);
+      image.encoded.assign(bytes, bytes + embedded->mWidth);
+    } else {  // raw BGRA texels
+      cv::Mat texels(static_cast<int>(embedded->mHeight), static_cast<int>(embedded->mWidth),
+                     CV_8UC4, const_cast<aiTexel*>(embedded->pcData));
+      cv::imencode(".png", texels, image.encoded);
+    }
+    return image;
+  }
+  std::string file = name.C_Str();
+  for (char& c : file)
+    if (c == '\\') c = '/';
+  image.path = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : folder / file;
+  return image;
+}
+
+/// The scene's materials: name, diffuse (or base colour) and opacity images.
+std::vector<MeshMaterial> materials_of(const aiScene& scene, const std::filesystem::path& folder) {
+  std::vector<MeshMaterial> materials;
+  for (unsigned m = 0; m < scene.mNumMaterials; ++m) {
+    const aiMaterial& source = *scene.mMaterials[m];
+    MeshMaterial material;
+    aiString name;
+    if (source.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) material.name = name.C_Str();
+    material.diffuse = material_image(scene, source, aiTextureType_DIFFUSE, folder);
+    if (!material.diffuse.present())
+      material.diffuse = material_image(scene, source, aiTextureType_BASE_COLOR, folder);
+    material.alpha = material_image(scene, source, aiTextureType_OPACITY, folder);
+    materials.push_back(std::move(material));
+  }
+  return materials;
+}
+
 /// Merges every polygon of an assimp scene into one mesh, welding vertices that
-/// share a position exactly (assimp splits them at texture seams).
-PolyMesh mesh_from_scene(const aiScene& scene) {
+/// share a position exactly (assimp splits them at texture seams), with each face's
+/// material; image paths resolve against `folder`.
+PolyMesh mesh_from_scene(const aiScene& scene, const std::filesystem::path& folder) {
   PolyMesh mesh;
+  mesh.materials = materials_of(scene, folder);
+  bool any_image = false;
+  for (const MeshMaterial& material : mesh.materials)
+    any_image |= material.diffuse.present() || material.alpha.present();
   std::map<std::tuple<float, float, float>, int32_t> vertex_at_position;
   std::vector<float> positions;
   std::vector<float> corner_uv;
@@ -54,7 +106,12 @@ PolyMesh mesh_from_scene(const aiScene& scene) {
         }
       }
       mesh.append_face(face);
+      mesh.face_material.push_back(static_cast<int32_t>(source.mMaterialIndex));
     }
+  }
+  if (!any_image) {  // assimp gives every mesh a default material: none is named here
+    mesh.materials.clear();
+    mesh.face_material.clear();
   }
   mesh.vertices = Eigen::Map<const Points3f>(positions.data(),
                                              static_cast<Eigen::Index>(positions.size() / 3), 3);
@@ -74,7 +131,7 @@ PolyMesh read_with_assimp(const std::filesystem::path& path) {
   if (scene == nullptr)
     throw Error::bad_input(path.string(),
                            std::string("cannot read mesh: ") + importer.GetErrorString());
-  return mesh_from_scene(*scene);
+  return mesh_from_scene(*scene, path.parent_path());
 }
 
 }  // namespace

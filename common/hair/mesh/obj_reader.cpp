@@ -1,4 +1,6 @@
 // Native Wavefront OBJ reader that keeps the file's vertex order (see mesh_io.h).
+#include <spdlog/spdlog.h>
+
 #include <charconv>
 #include <fstream>
 #include <string>
@@ -7,6 +9,7 @@
 
 #include "hair/core/error.h"
 #include "hair/mesh/mesh_io.h"
+#include "hair/mesh/mesh_material.h"
 
 namespace hair {
 namespace {
@@ -26,7 +29,8 @@ std::string_view next_token(std::string_view& rest) {
 
 class ObjParser {
  public:
-  explicit ObjParser(std::string file) : file_(std::move(file)) {}
+  explicit ObjParser(const std::filesystem::path& path)
+      : file_(path.string()), folder_(path.parent_path()) {}
 
   [[noreturn]] void fail(const std::string& reason) const {
     throw Error::bad_input(file_, "line " + std::to_string(line_number_) + ": " + reason);
@@ -61,6 +65,7 @@ class ObjParser {
     PolyMesh mesh;
     std::string line;
     std::vector<int32_t> face;
+    std::vector<int32_t> face_material;
     while (std::getline(input, line)) {
       ++line_number_;
       std::string_view rest = line;
@@ -76,6 +81,19 @@ class ObjParser {
           std::string_view token = next_token(rest);
           texcoords.push_back(token.empty() ? 0.0f : parse_float(token));
         }
+      } else if (keyword == "mtllib") {
+        read_material_library(rest, mesh);
+      } else if (keyword == "usemtl") {
+        std::string name = trimmed(rest);
+        current_material_ = -1;
+        for (size_t m = 0; m < mesh.materials.size(); ++m)
+          if (mesh.materials[m].name == name) current_material_ = static_cast<int32_t>(m);
+        if (current_material_ < 0 && !name.empty()) {
+          // Named in no library read (or the library is missing): a material without images.
+          mesh.materials.push_back(MeshMaterial{name, {}, {}});
+          current_material_ = static_cast<int32_t>(mesh.materials.size() - 1);
+        }
+        any_material_ = true;
       } else if (keyword == "f") {
         face.clear();
         for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
@@ -91,9 +109,11 @@ class ObjParser {
         }
         if (face.size() < 3) fail("face with fewer than 3 vertices");
         mesh.append_face(face);
+        face_material.push_back(current_material_);
       }
     }
     if (input.bad()) throw Error::bad_input(file_, "read error");
+    if (any_material_) mesh.face_material = std::move(face_material);
 
     mesh.vertices = Eigen::Map<const Points3f>(positions.data(),
                                                static_cast<Eigen::Index>(positions.size() / 3), 3);
@@ -112,8 +132,42 @@ class ObjParser {
   }
 
  private:
+  static std::string trimmed(std::string_view text) {
+    size_t begin = text.find_first_not_of(" \t\r");
+    if (begin == std::string_view::npos) return {};
+    size_t end = text.find_last_not_of(" \t\r");
+    return std::string(text.substr(begin, end - begin + 1));
+  }
+
+  /// `mtllib` names one or more MTL files, relative to the OBJ's folder; a name with
+  /// spaces is taken whole when that file exists. A missing or unreadable library is a
+  /// warning: the mesh is read without its images.
+  void read_material_library(std::string_view arguments, PolyMesh& mesh) {
+    std::vector<std::string> names;
+    std::string whole = trimmed(arguments);
+    if (std::filesystem::is_regular_file(folder_ / whole)) {
+      names.push_back(whole);
+    } else {
+      std::string_view rest = arguments;
+      for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest))
+        names.emplace_back(token);
+    }
+    for (const std::string& name : names) {
+      std::filesystem::path library = folder_ / name;
+      try {
+        for (MeshMaterial& material : read_mtl(library)) mesh.materials.push_back(std::move(material));
+      } catch (const Error& error) {
+        spdlog::warn("{}: line {}: {}: the mesh is read without its painted images", file_,
+                     line_number_, error.what());
+      }
+    }
+  }
+
   std::string file_;
+  std::filesystem::path folder_;
   long line_number_ = 0;
+  int32_t current_material_ = -1;
+  bool any_material_ = false;
 };
 
 }  // namespace
@@ -121,7 +175,7 @@ class ObjParser {
 PolyMesh read_obj(const std::filesystem::path& path) {
   std::ifstream input(path);
   if (!input) throw Error::bad_input(path.string(), "cannot open file");
-  return ObjParser(path.string()).parse(input);
+  return ObjParser(path).parse(input);
 }
 
 }  // namespace hair

@@ -68,6 +68,9 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
       auto found = triangle_with_edge.find(directed_edge_key(triangle[(c + 1) % 3], triangle[c]));
       if (found == triangle_with_edge.end() || found->second.first <= f) continue;
       auto [other_face, other_corner] = found->second;
+      if (mesh.has_materials() && mesh.face_material[static_cast<size_t>(f)] !=
+                                      mesh.face_material[static_cast<size_t>(other_face)])
+        continue;  // a quad paints one image
       auto other = mesh.face(other_face);
       if (!is_longest_edge(mesh, triangle, c) && !is_longest_edge(mesh, other, other_corner))
         continue;
@@ -101,6 +104,7 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
 
   QuadRecovery recovery;
   recovery.mesh.vertices = mesh.vertices;
+  recovery.mesh.materials = mesh.materials;
   std::vector<float> uv;
   std::vector<int32_t> face;
   auto emit_corners = [&](std::span<const int64_t> corners, int64_t source_face) {
@@ -113,6 +117,7 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
       }
     }
     recovery.mesh.append_face(face);
+    if (mesh.has_materials()) recovery.mesh.face_material.push_back(mesh.face_material[source_face]);
     recovery.source_face.push_back(source_face);
   };
   std::vector<int64_t> corners;

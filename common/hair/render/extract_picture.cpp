@@ -1,11 +1,13 @@
 #include "hair/render/extract_picture.h"
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #include "hair/cluster/typeify_io.h"
 #include "hair/core/error.h"
 #include "hair/extract/extract_io.h"
+#include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/h5/strand_set_io.h"
@@ -43,6 +45,37 @@ std::vector<int32_t> per_strand(const std::vector<int8_t>& per_group,
   return values;
 }
 
+/// The input strands coloured by how they run against the painted flow, with a legend
+/// that gives the share of judged segments along it.
+cv::Mat flow_picture(const h5::File& file, const StrandSet& strands, const ExtractedBody& body,
+                     const RenderOptions& options) {
+  ExtractedPaint paint = read_extracted_paint(file);
+  const double head_height_m = h5::read_double_attribute(file, "/", "head_height_m");
+  std::vector<int8_t> along =
+      segments_along_painted_flow(paint.mesh, paint.flow, strands, kClearFlowCoherence,
+                                  kFlowAgreementAngleDeg, 0.1 * head_height_m);
+  // BGR: across red, along green, not judged grey.
+  static const std::vector<cv::Vec3b> flow_colours = {{50, 50, 215}, {60, 170, 40}, {170, 170, 170}};
+  PointColours colours;
+  colours.reserve(along.size());
+  int64_t judged = 0, agreeing = 0;
+  for (int8_t value : along) {
+    colours.push_back(flow_colours[static_cast<size_t>(value < 0 ? 2 : value)]);
+    judged += value >= 0;
+    agreeing += value == 1;
+  }
+  cv::Mat image = render_strands(strands, colours, body.vertices, body.triangles, options);
+  const std::string share =
+      judged ? std::to_string(static_cast<int>(std::lround(100.0 * static_cast<double>(agreeing) /
+                                                           static_cast<double>(judged)))) + "%"
+             : "-";
+  h5::EnumMembers legend = {{"across the paint", 0},
+                            {"along the paint (" + share + " of points judged)", 1},
+                            {"no clear paint", 2}};
+  draw_legend(image, legend, flow_colours);
+  return image;
+}
+
 }  // namespace
 
 ExtractColouring parse_extract_colouring(const std::string& word) {
@@ -50,7 +83,8 @@ ExtractColouring parse_extract_colouring(const std::string& word) {
   if (word == "direction") return ExtractColouring::direction;
   if (word == "rule") return ExtractColouring::rule;
   if (word == "kind") return ExtractColouring::kind;
-  throw Error::usage("colouring '" + word + "' is not one of: group, direction, rule, kind");
+  if (word == "flow") return ExtractColouring::flow;
+  throw Error::usage("colouring '" + word + "' is not one of: group, direction, rule, kind, flow");
 }
 
 cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
@@ -84,6 +118,8 @@ cv::Mat extract_picture(const h5::File& file, ExtractColouring colouring,
           per_strand(h5::read_enum_dataset(file, "/groups/patch_kind", *legend), strand_group),
           category_colours());
       break;
+    case ExtractColouring::flow:
+      return flow_picture(file, strands, body, options);
   }
   cv::Mat image = render_strands(strands, colours, body.vertices, body.triangles, options);
   if (legend) draw_legend(image, *legend);

@@ -15,9 +15,11 @@ enum class ExtractColouring {
   direction,  ///< root (dark blue) to tip (yellow): shows the orientation
   rule,       ///< the rule that decided the orientation (with a legend)
   kind,       ///< the patch kind (with a legend)
+  flow,       ///< along the painted flow of the nearest face (green), across it (red), or
+              ///< no clear paint there (grey), with a legend and the share along
 };
 
-/// Parses "group", "direction", "rule" or "kind"; a usage error otherwise.
+/// Parses "group", "direction", "rule", "kind" or "flow"; a usage error otherwise.
 ExtractColouring parse_extract_colouring(const std::string& word);
 
 /// Renders the input strands of an extract.h5 file over its body.

@@ -157,7 +157,7 @@ TEST(SchemaRegistry, EveryEmbeddedSchemaParsesAndIsFoundByName) {
 
 TEST(SchemaRegistry, ExtractSchemaHasTheContractedDatasets) {
   const Schema& schema = Schema::find("hairstyle.extract");
-  EXPECT_EQ(schema.version, 1);
+  EXPECT_EQ(schema.version, 2);
   EXPECT_EQ(schema.dataset("/strands/points").shape_text(), "[n_points, 3]");
   EXPECT_EQ(schema.dataset("/strands/points").unit, "m");
   EXPECT_EQ(schema.dataset("/strands/offsets").constraints.csr_offsets_of, "n_points");
@@ -166,6 +166,8 @@ TEST(SchemaRegistry, ExtractSchemaHasTheContractedDatasets) {
   EXPECT_TRUE(schema.dataset("/groups/patch_kind").is_enum());
   EXPECT_TRUE(schema.dataset("/groups/orientation_rule").is_enum());
   EXPECT_EQ(schema.dataset("/body/scalp_triangle").constraints.max, 1.0);
+  EXPECT_EQ(schema.dataset("/mesh/face_flow").shape_text(), "[n_faces, 3]");
+  EXPECT_EQ(schema.dataset("/mesh/face_flow_coherence").constraints.max, 1.0);
 }
 
 TEST(SchemaText, NamesEverythingAReaderNeeds) {
@@ -189,7 +191,7 @@ TEST(SchemaText, NamesEverythingAReaderNeeds) {
         "/a/x  float32 [n, 2]  finite, > 0, unit m, optional\n      X."}) {
     EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
   }
-  EXPECT_EQ(format_schema(Schema::find("hairstyle.extract")).rfind("hairstyle.extract v1\n", 0),
+  EXPECT_EQ(format_schema(Schema::find("hairstyle.extract")).rfind("hairstyle.extract v2\n", 0),
             0u);
 }
 

@@ -1,0 +1,76 @@
+#pragma once
+// The flow an artist painted on a hair mesh (issue: real artist meshes). A hair card's
+// texture shows the hair: its strokes run along the strands and its alpha fades out
+// towards the tips. Per face, the orientation of the strokes under the face (the
+// structure tensor of the texture's luminance) is carried into 3D through the face's
+// texture map; the alpha's fall along it across the face says which way the tips lie.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hair/mesh/poly_mesh.h"
+
+namespace hair {
+
+/// Parameters of painted_flow().
+struct PaintedFlowParams {
+  /// Texels with at least this alpha are painted hair; the others are left out.
+  double min_alpha = 0.2;
+  /// Gaussian window of the structure tensor and of the alpha's gradient, texels.
+  double window_px = 3.0;
+  /// Samples per side of each of a face's triangles in texture space (n (n + 1) / 2 each).
+  int samples_per_side = 3;
+  /// A face is painted when at least this share of its samples falls on painted texels.
+  double min_painted_share = 0.5;
+};
+
+/// Per face of the mesh: the painted flow axis in 3D, how clearly the strokes run one way,
+/// and how much the alpha falls along it. A face without an image, texture coordinates,
+/// painted texels or a texture map that spans 2D has direction zero and coherence zero.
+struct PaintedFlow {
+  std::vector<Eigen::Vector3f> direction;  ///< #faces: unit, or zero where not painted
+  /// #faces, in [0, 1]: (l1 - l2) / (l1 + l2) of the structure tensor's eigenvalues (1:
+  /// strokes all one way; 0: no way preferred).
+  std::vector<float> coherence;
+  /// #faces, >= 0: the fall of the alpha along `direction` across the face (alpha at the
+  /// face's back end minus at its front end, along the strokes). `direction` points the way
+  /// the alpha falls, towards the tips, wherever this is clearly above zero; where it is
+  /// near zero, its sign is arbitrary.
+  std::vector<float> alpha_fall;
+  /// Images that could not be read, one message each (already logged as warnings).
+  std::vector<std::string> unreadable_images;
+
+  int64_t painted_face_count() const;
+};
+
+/// The painted flow of every face of `mesh` (its materials' images, read from disk or
+/// embedded). An image that is missing, unreadable, empty or not an image gives one warning
+/// naming it and leaves its faces unpainted; it never throws for that. `source` names the
+/// mesh in messages.
+PaintedFlow painted_flow(const PolyMesh& mesh, const PaintedFlowParams& params,
+                         const std::string& source);
+
+/// A face's painted flow is clear from this coherence on (the measures count only those).
+inline constexpr double kClearFlowCoherence = 0.3;
+/// A strand segment runs along the painted flow when within this angle of its axis.
+inline constexpr double kFlowAgreementAngleDeg = 30;
+
+/// Per point of `strands`, how the segment that ends there (the root: the segment that
+/// starts there) runs against the painted flow of its nearest face: 1 within
+/// `max_angle_deg` of its axis (either sense), 0 not, -1 not judged (the nearest face
+/// farther than `max_distance_m`, or its flow under `min_coherence`; a segment of no
+/// length; a strand of one point).
+std::vector<int8_t> segments_along_painted_flow(const PolyMesh& mesh, const PaintedFlow& flow,
+                                                const StrandSet& strands, double min_coherence,
+                                                double max_angle_deg, double max_distance_m);
+
+/// The share of the judged segments of `strands` that run along the painted flow
+/// (segments_along_painted_flow()); `counted` receives how many were judged (0: the share
+/// is 0).
+double painted_flow_agreement(const PolyMesh& mesh, const PaintedFlow& flow,
+                              const StrandSet& strands, double min_coherence,
+                              double max_angle_deg, double max_distance_m, int64_t& counted);
+
+}  // namespace hair
