@@ -26,10 +26,11 @@ int main(int argc, char** argv) {
   return app.run(argc, argv, [&] {
     hair::PolyMesh hair_mesh = hair::read_mesh(hair_path, params.reader());
     hair::PolyMesh body_mesh = hair::read_mesh(body_path, params.reader());
-    hair::ExtractResult result = hair::extract_strands(std::move(hair_mesh), std::move(body_mesh),
-                                                       params.extract, hair_path, body_path);
-    result.painted_flow =
-        hair::painted_flow(result.hair_mesh, params.extract.painted_flow, hair_path);
+    const hair::PaintedTextures textures =
+        hair::load_painted_textures(hair_mesh.materials, params.extract.painted_flow, hair_path);
+    hair::ExtractResult result =
+        hair::extract_strands(std::move(hair_mesh), std::move(body_mesh), params.extract,
+                              hair_path, body_path, textures);
     const hair::ExtractStats& stats = result.stats;
     const auto scalp_triangles =
         std::count(result.scalp_triangle.begin(), result.scalp_triangle.end(), 1);
@@ -38,9 +39,16 @@ int main(int argc, char** argv) {
                  result.strands.point_count(), result.head.head_height, scalp_triangles);
     spdlog::info(
         "{}: orientation rules: vertex_order {}, scalp_distance {}, continuation {}, uv {}, "
-        "height {}, parting {}",
+        "height {}, parting {}, alpha_fade {}",
         hair_path, stats.groups_by_rule[0], stats.groups_by_rule[1], stats.groups_by_rule[2],
-        stats.groups_by_rule[3], stats.groups_by_rule[4], stats.groups_by_rule[5]);
+        stats.groups_by_rule[3], stats.groups_by_rule[4], stats.groups_by_rule[5],
+        stats.groups_by_rule[6]);
+    spdlog::info(
+        "{}: rails chosen by chain length in {} regions, texture axis {}, painted flow {} "
+        "({} of them across the longer chains); {} patches traced along the paint",
+        hair_path, stats.regions_by_along_rule[0], stats.regions_by_along_rule[1],
+        stats.regions_by_along_rule[2], stats.regions_turned_by_paint,
+        stats.patches_traced_along_paint);
     if (const int64_t painted = result.painted_flow.painted_face_count(); painted > 0) {
       int64_t segments = 0;
       const double along = hair::painted_flow_agreement(

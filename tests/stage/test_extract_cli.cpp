@@ -144,7 +144,7 @@ class ExtractCli : public ::testing::Test {
     EXPECT_EQ(inspect.exit_code, 0) << inspect.out << inspect.err;
     const std::vector<std::string> report = text_lines(inspect.out);
     ASSERT_FALSE(report.empty());
-    EXPECT_EQ(report.back(), "valid: hairstyle.extract v2");
+    EXPECT_EQ(report.back(), "valid: hairstyle.extract v3");
     EXPECT_EQ(group_count(directory_ / "out.h5"), expected_groups);
   }
 

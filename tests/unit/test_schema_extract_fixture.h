@@ -20,7 +20,7 @@ inline void remove_object(h5::File& file, const std::string& path) {
   ASSERT_GE(H5Ldelete(file.id(), path.c_str(), H5P_DEFAULT), 0) << path;
 }
 
-/// Writes a small file that conforms to hairstyle.extract v2 (2 groups, 3 strands of 2,
+/// Writes a small file that conforms to hairstyle.extract v3 (2 groups, 3 strands of 2,
 /// 3 and 2 points, a hair mesh of 8 vertices and 3 faces, a body of 4 vertices and 2
 /// triangles), then lets `tamper` change it; the file is named "extract.h5" in errors.
 inline void write_extract_file(const std::filesystem::path& path,

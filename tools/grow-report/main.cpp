@@ -1,23 +1,53 @@
 // hair-grow-report: how well the strands of strands.h5 reproduce the hair mesh of the
 // extract.h5 they were grown from: coverage, fidelity, points inside the body, roots
-// off the scalp (docs/grow.md). Prints one Markdown table row, or the header with --header.
+// off the scalp, the worst patch's coverage, how the input and the grown strands follow the
+// painted flow, and the strands per cluster (docs/grow.md). Prints one Markdown table row,
+// or the header with --header; --clusters prints a table of the strands per cluster.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 
+#include <algorithm>
+
 #include "hair/core/error.h"
 #include "hair/extract/extract_io.h"
+#include "hair/extract/painted_flow.h"
 #include "hair/grow/grow_io.h"
 #include "hair/grow/grow_measures.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema_validation.h"
+#include "hair/h5/strand_set_io.h"
+
+namespace {
+
+/// Per triangle of the fan triangulation of faces with `face_offsets`, its face's group.
+std::vector<int32_t> triangle_groups(const std::vector<int64_t>& face_offsets,
+                                     const std::vector<int32_t>& face_group) {
+  std::vector<int32_t> groups;
+  for (size_t f = 0; f + 1 < face_offsets.size(); ++f)
+    groups.insert(groups.end(), static_cast<size_t>(std::max<int64_t>(0, face_offsets[f + 1] - face_offsets[f] - 2)),
+                  face_group[f]);
+  return groups;
+}
+
+/// "a% (n)" for a share of n judged, or "-" when nothing was judged.
+std::string share_text(double share, int64_t judged) {
+  if (judged == 0) return "-";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f%%", 100 * share);
+  return text;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app("Measure grown strands against the hair mesh and the body.", "hair-grow-report");
   std::string extract_path, strands_path, name;
   int samples = 20000;
-  bool header = false;
+  bool header = false, clusters = false;
   app.add_flag("--header", header, "print the table's header and exit");
+  app.add_flag("--clusters", clusters,
+               "print a table of the strands per cluster instead of the measures");
   app.add_option("EXTRACT_H5", extract_path, "extract.h5 the strands were grown from");
   app.add_option("STRANDS_H5", strands_path, "strands.h5 from the grow stage");
   app.add_option("--name", name, "first column (default: the strands file)");
@@ -33,7 +63,9 @@ int main(int argc, char** argv) {
   if (header) {
     std::printf(
         "| model | strands | points | coverage mean / p95 (H) | fidelity mean / p95 (H) | "
-        "points inside body | root to scalp mean / max (H) |\n|---|---:|---:|---|---|---:|---|\n");
+        "points inside body | root to scalp mean / max (H) | worst patch: coverage mean (H) | "
+        "input along paint | grown along flow | clusters: strands min / median / max |\n"
+        "|---|---:|---:|---|---|---:|---|---|---:|---:|---|\n");
     return 0;
   }
   try {
@@ -48,15 +80,57 @@ int main(int argc, char** argv) {
         hair::fan_triangulation(hair::h5::read_vector<int64_t>(extract, "/mesh/face_offsets"),
                                 hair::h5::read_vector<int32_t>(extract, "/mesh/face_vertices"));
     hair::ExtractedBody body = hair::read_extracted_body(extract);
+    const auto strand_count_by_cluster = hair::h5::read_vector<int64_t>(
+        hair::h5::File::open_read_only(strands_path), "/clusters/strand_count");
+    const std::string label = name.empty() ? strands_path : name;
+    if (clusters) {
+      std::printf("| %s: cluster | strands | share |\n|---:|---:|---:|\n", label.c_str());
+      for (size_t c = 0; c < strand_count_by_cluster.size(); ++c)
+        std::printf("| %zu | %lld | %.1f%% |\n", c,
+                    static_cast<long long>(strand_count_by_cluster[c]),
+                    100.0 * static_cast<double>(strand_count_by_cluster[c]) /
+                        static_cast<double>(std::max<int64_t>(1, grown.strands.strand_count())));
+      return 0;
+    }
     hair::GrowMeasures m = hair::measure_grown_strands(
         grown.strands, hair_vertices, hair_triangles, body.vertices, body.triangles,
-        body.scalp_triangle, grown.head_height_m, samples);
-    std::printf("| %s | %lld | %lld | %.4f / %.4f | %.4f / %.4f | %.2f%% | %.4f / %.4f |\n",
-                (name.empty() ? strands_path : name).c_str(),
-                static_cast<long long>(grown.strands.strand_count()),
+        body.scalp_triangle, grown.head_height_m, samples,
+        triangle_groups(hair::h5::read_vector<int64_t>(extract, "/mesh/face_offsets"),
+                        hair::h5::read_vector<int32_t>(extract, "/mesh/face_group")));
+
+    // The flow: input strands against the paint where it is clear; grown strands against
+    // the paint, or the rails where there is none, within 0.1 H of the mesh.
+    const hair::ExtractedPaint paint = hair::read_extracted_paint(extract);
+    const hair::StrandSet input = hair::h5::read_strand_set(extract, "/strands");
+    const double near_m = 0.1 * grown.head_height_m;
+    int64_t input_judged = 0, grown_judged = 0;
+    const double input_along = hair::painted_flow_agreement(
+        paint.mesh, paint.flow, input, hair::kClearFlowCoherence, hair::kFlowAgreementAngleDeg,
+        near_m, input_judged);
+    const double grown_along = hair::painted_flow_agreement(
+        paint.mesh, hair::flow_with_rails(paint.mesh, paint.flow, input, near_m), grown.strands,
+        hair::kClearFlowCoherence, hair::kFlowAgreementAngleDeg, near_m, grown_judged);
+
+    std::vector<int64_t> sorted_counts = strand_count_by_cluster;
+    std::sort(sorted_counts.begin(), sorted_counts.end());
+    std::string cluster_text = "-";
+    if (!sorted_counts.empty())
+      cluster_text = std::to_string(sorted_counts.size()) + ": " + std::to_string(sorted_counts.front()) +
+                     " / " + std::to_string(sorted_counts[sorted_counts.size() / 2]) + " / " +
+                     std::to_string(sorted_counts.back());
+    std::string worst_text = "-";
+    if (m.worst_group >= 0) {
+      char text[96];
+      std::snprintf(text, sizeof text, "group %d: %.4f", m.worst_group, m.worst_group_coverage_mean_h);
+      worst_text = text;
+    }
+    std::printf("| %s | %lld | %lld | %.4f / %.4f | %.4f / %.4f | %.2f%% | %.4f / %.4f | %s | %s | %s | %s |\n",
+                label.c_str(), static_cast<long long>(grown.strands.strand_count()),
                 static_cast<long long>(grown.strands.point_count()), m.coverage_mean_h,
                 m.coverage_p95_h, m.fidelity_mean_h, m.fidelity_p95_h, 100 * m.inside_body_share,
-                m.root_distance_mean_h, m.root_distance_max_h);
+                m.root_distance_mean_h, m.root_distance_max_h, worst_text.c_str(),
+                share_text(input_along, input_judged).c_str(),
+                share_text(grown_along, grown_judged).c_str(), cluster_text.c_str());
   } catch (const hair::Error& e) {
     std::cerr << "hair-grow-report: error: " << e.what() << "\n";
     return e.exit_code();

@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "hair/core/error.h"
+#include "hair/extract/painted_streamlines.h"
+#include "hair/extract/rail_paint.h"
 #include "hair/geom/point_index.h"
 #include "hair/mesh/mesh_checks.h"
 #include "hair/mesh/mesh_patches.h"
@@ -33,22 +35,30 @@ std::optional<double> share_true(const std::vector<bool>& observations) {
          static_cast<double>(observations.size());
 }
 
-/// Picks the family of each quad region that runs along the hair: the family with
-/// clearly longer chains; where the two are alike (square cards, caps), the family
-/// that follows the mesh's texture axis, learnt from the clear regions.
-std::vector<std::vector<int>> along_families(const std::vector<PatchTopology>& topologies,
-                                             const ExtractParams& params) {
+/// Picks the family of each quad region that runs along the hair: where the painted
+/// flow decides (family_along_paint()), the family along the paint; else the family with
+/// clearly longer chains; where the two are alike (square cards, caps), the family that
+/// follows the mesh's texture axis, learnt from the clear regions.
+std::vector<std::vector<int>> along_families(
+    const std::vector<PatchTopology>& topologies,
+    const std::vector<std::vector<std::array<FamilyPaint, 2>>>& paint, const ExtractParams& params,
+    ExtractStats& stats) {
   constexpr double min_alignment_difference = 0.2;
+  auto paint_decides = [&](size_t p, size_t r) {
+    return family_along_paint(paint[p][r], params.along_paint_min_judged_share,
+                              params.along_paint_min_gap);
+  };
   std::vector<bool> along_is_v;  // clear regions: does the along family follow v?
-  for (const PatchTopology& topology : topologies)
-    for (const QuadRegion& region : topology.regions) {
-      const auto& f = region.families;
+  for (size_t p = 0; p < topologies.size(); ++p)
+    for (size_t r = 0; r < topologies[p].regions.size(); ++r) {
+      const auto& f = topologies[p].regions[r].families;
       double longer = std::max(f[0].mean_chain_length, f[1].mean_chain_length);
       double shorter = std::min(f[0].mean_chain_length, f[1].mean_chain_length);
-      if (f[0].v_alignment < 0 || longer < params.along_length_ratio * shorter ||
-          std::abs(f[0].v_alignment - f[1].v_alignment) < min_alignment_difference)
+      if (f[0].v_alignment < 0 || std::abs(f[0].v_alignment - f[1].v_alignment) < min_alignment_difference)
         continue;
-      int along = f[0].mean_chain_length > f[1].mean_chain_length ? 0 : 1;
+      int along = paint_decides(p, r);
+      if (along < 0 && longer < params.along_length_ratio * shorter) continue;
+      if (along < 0) along = f[0].mean_chain_length > f[1].mean_chain_length ? 0 : 1;
       along_is_v.push_back(f[along].v_alignment > f[1 - along].v_alignment);
     }
   std::optional<bool> texture_axis_is_v;
@@ -59,20 +69,27 @@ std::vector<std::vector<int>> along_families(const std::vector<PatchTopology>& t
 
   std::vector<std::vector<int>> along(topologies.size());
   for (size_t p = 0; p < topologies.size(); ++p)
-    for (const QuadRegion& region : topologies[p].regions) {
-      const auto& f = region.families;
+    for (size_t r = 0; r < topologies[p].regions.size(); ++r) {
+      const auto& f = topologies[p].regions[r].families;
       int longer = f[0].mean_chain_length >= f[1].mean_chain_length ? 0 : 1;
       bool clear = f[longer].mean_chain_length >=
                    params.along_length_ratio * f[1 - longer].mean_chain_length;
       bool texture_tells =
           texture_axis_is_v && f[0].v_alignment >= 0 &&
           std::abs(f[0].v_alignment - f[1].v_alignment) >= min_alignment_difference;
-      if (clear || !texture_tells) {
-        along[p].push_back(longer);
-      } else {
+      AlongRule rule = AlongRule::chain_length;
+      int chosen = longer;
+      if (int painted = paint_decides(p, r); painted >= 0) {
+        rule = AlongRule::painted_flow;
+        chosen = painted;
+        if (clear && painted != longer) ++stats.regions_turned_by_paint;
+      } else if (!clear && texture_tells) {
+        rule = AlongRule::texture_axis;
         int v_family = f[0].v_alignment > f[1].v_alignment ? 0 : 1;
-        along[p].push_back(*texture_axis_is_v ? v_family : 1 - v_family);
+        chosen = *texture_axis_is_v ? v_family : 1 - v_family;
       }
+      along[p].push_back(chosen);
+      ++stats.regions_by_along_rule[static_cast<size_t>(rule)];
     }
   return along;
 }
@@ -354,12 +371,14 @@ Triangles3i head_triangles_of(const Points3f& body_vertices, const Triangles3i& 
 /// The rails of every region of every patch (the chains of its along family; short
 /// fragments dropped, closed and draped rails parted), and what they say about their
 /// direction.
-std::vector<RegionRails> region_rails(const Points3f& vertices,
+std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& flow,
+                                      const EdgeFaces& edge_faces,
                                       const std::vector<PatchTopology>& topologies,
                                       const std::vector<std::vector<int>>& along,
                                       const TriangleMeshDistance& head_distance,
                                       const ExtractParams& params, double head_height_m,
                                       ExtractStats& stats) {
+  const Points3f& vertices = mesh.vertices;
   std::vector<RegionRails> regions;
   for (int32_t p = 0; p < static_cast<int32_t>(topologies.size()); ++p) {
     stats.family_conflicts += topologies[p].family_conflicts;
@@ -394,9 +413,15 @@ std::vector<RegionRails> region_rails(const Points3f& vertices,
     const RegionRails& region = regions[i];
     int32_t p = region.patch;
     size_t r = region.region_in_patch;
-    regions[i].evidence =
+    OrientationEvidence evidence =
         orientation_evidence(vertices, region.open_rails,
                              topologies[p].regions[r].families[along[p][r]], head_distance, params);
+    AlphaFade fade = rails_alpha_fade(mesh, flow, edge_faces, region.open_rails);
+    if (fade.judged_edges > 0) {
+      evidence.alpha_fade_vote = fade.vote;
+      evidence.alpha_fade_mean_fall = fade.mean_fall;
+    }
+    regions[i].evidence = evidence;
   }
   return regions;
 }
@@ -435,11 +460,99 @@ std::pair<Points3f, OrientationDecision> triangle_soup_strand(
   return {std::move(polyline), decision};
 }
 
+/// The strands of a patch traced along its paint, oriented, and the group's decision.
+struct PatchStreamlines {
+  std::vector<Points3f> polylines;
+  OrientationDecision decision;
+};
+
+/// Whether patch `p`'s rails would cross the hair its faces show: its faces' paint is
+/// clear on most of them, and the chosen rails of its regions run along that paint on
+/// less than `params.streamline_max_along_share` of their judged length.
+bool rails_cross_the_paint(const PatchTopology& topology,
+                           const std::vector<std::array<FamilyPaint, 2>>& paint,
+                           const std::vector<int>& along, const ExtractParams& params) {
+  double judged = 0, agreeing = 0, weight = 0;
+  for (size_t r = 0; r < topology.regions.size(); ++r) {
+    const FamilyPaint& chosen = paint[r][static_cast<size_t>(along[r])];
+    const auto quads = static_cast<double>(topology.regions[r].quad_count);
+    weight += quads;
+    judged += quads * chosen.judged_share;
+    agreeing += quads * chosen.judged_share * chosen.along_share;
+  }
+  return weight > 0 && judged >= params.along_paint_min_judged_share * weight &&
+         agreeing < params.streamline_max_along_share * judged;
+}
+
+/// Median length of the edges of `faces`.
+double median_edge_length(const PolyMesh& mesh, std::span<const int64_t> faces) {
+  std::vector<double> lengths;
+  for (int64_t face : faces) {
+    const int64_t first = mesh.face_offsets[static_cast<size_t>(face)];
+    const int corners = mesh.face_size(face);
+    for (int c = 0; c < corners; ++c)
+      lengths.push_back((mesh.vertices.row(mesh.face_vertices[static_cast<size_t>(first + c)]) -
+                         mesh.vertices.row(mesh.face_vertices[static_cast<size_t>(first + (c + 1) % corners)]))
+                            .norm());
+  }
+  if (lengths.empty()) return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2),
+                   lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+/// The streamlines of a patch whose rails cross its paint, each oriented on its own
+/// (head distance, alpha fade, height: decide_orientation() without conventions); the
+/// group's rule is the most common one, its confidence the mean.
+PatchStreamlines oriented_streamlines(const PolyMesh& mesh, const PaintedFlow& flow,
+                                      std::span<const int64_t> faces,
+                                      const TriangleMeshDistance& head_distance,
+                                      const OrientationThresholds& thresholds) {
+  StreamlineParams params;
+  params.spacing_m = std::max(1e-6, median_edge_length(mesh, faces));
+  params.min_length_m = 2 * params.spacing_m;
+  PatchStreamlines result;
+  std::array<int, 7> rule_count{};
+  double confidence_sum = 0;
+  for (PaintedStreamline& line : painted_streamlines(mesh, flow, faces, params)) {
+    Points3f& points = line.points;
+    Eigen::Vector3d first = points.row(0).cast<double>().transpose();
+    Eigen::Vector3d last = points.row(points.rows() - 1).cast<double>().transpose();
+    double length = 0;
+    for (Eigen::Index i = 1; i < points.rows(); ++i)
+      length += (points.row(i) - points.row(i - 1)).cast<double>().norm();
+    OrientationEvidence evidence;
+    const double first_distance = head_distance.distance(first);
+    const double last_distance = head_distance.distance(last);
+    evidence.scalp_distance_slope = (last_distance - first_distance) / length;
+    evidence.height_slope = (first.y() - last.y()) / length;
+    evidence.head_distance_min_m = std::min(first_distance, last_distance);
+    if (line.fade_mean_fall > 0) {
+      evidence.alpha_fade_vote = line.fade_vote;
+      evidence.alpha_fade_mean_fall = line.fade_mean_fall;
+    }
+    OrientationDecision decision =
+        *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
+    if (decision.reverse) points = points.colwise().reverse().eval();
+    ++rule_count[static_cast<size_t>(decision.rule)];
+    confidence_sum += decision.confidence;
+    result.polylines.push_back(std::move(points));
+  }
+  if (!result.polylines.empty()) {
+    result.decision.rule = static_cast<OrientationRule>(
+        std::max_element(rule_count.begin(), rule_count.end()) - rule_count.begin());
+    result.decision.confidence =
+        static_cast<float>(confidence_sum / static_cast<double>(result.polylines.size()));
+  }
+  return result;
+}
+
 /// The strands, group (patch) by group: each region's rails in their decided direction,
 /// or one strand along a patch without usable quads; the group's kind, rule and
 /// confidence (those of its region with the most rails) into `result`.
 void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>& topologies,
                    const std::vector<std::vector<int>>& along, std::vector<RegionRails>& regions,
+                   const std::vector<std::optional<PatchStreamlines>>& streamlines,
                    const TriangleMeshDistance& head_distance,
                    const OrientationThresholds& thresholds, ExtractResult& result) {
   const Points3f& vertices = result.hair_mesh.vertices;
@@ -470,6 +583,15 @@ void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>&
                              : OrientationDecision{false, OrientationRule::parting, 1.0f};
       }
     }
+    if (const auto& traced = streamlines[static_cast<size_t>(p)]; traced && !traced->polylines.empty()) {
+      for (const Points3f& polyline : traced->polylines) {
+        source_vertex.insert(source_vertex.end(), static_cast<size_t>(polyline.rows()), -1);
+        polylines.push_back(polyline);
+        strand_group.push_back(p);
+        strand_rail.push_back(rail_in_patch++);
+      }
+      group_decision = traced->decision;
+    }
     PatchKind kind = patch_kind(topologies[p], along[p]);
     if (rail_in_patch == 0 || kind == PatchKind::triangle_soup) {
       kind = PatchKind::triangle_soup;
@@ -499,7 +621,8 @@ void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>&
 }  // namespace
 
 ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
-                              const std::string& hair_file, const std::string& body_file) {
+                              const std::string& hair_file, const std::string& body_file,
+                              const PaintedTextures& textures) {
   ExtractResult result;
   MeshCleanup cleanup = clean_mesh(hair_mesh, hair_file);
   clean_mesh(body_mesh, body_file);
@@ -532,16 +655,42 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
 #pragma omp parallel for schedule(dynamic)
   for (int32_t p = 0; p < patches.patch_count(); ++p)
     topologies[p] = patch_topology(result.hair_mesh, patches.patch_faces[p]);
-  std::vector<std::vector<int>> along = along_families(topologies, params);
+
+  // The painted flow, and the family of each region that runs along the hair.
+  result.painted_flow = painted_flow(result.hair_mesh, textures, params.painted_flow);
+  const EdgeFaces edge_faces(result.hair_mesh);
+  const auto paint = family_paint(result.hair_mesh, result.painted_flow, edge_faces, topologies);
+  std::vector<std::vector<int>> along = along_families(topologies, paint, params, result.stats);
 
   // Rails, their directions, and the strands group by group.
   std::vector<RegionRails> regions =
-      region_rails(vertices, topologies, along, head_distance, params, head_height_m, result.stats);
-  OrientationThresholds thresholds{params.vertex_order_min_vote, params.scalp_distance_min_slope,
-                                   params.uv_min_growth, params.height_min_slope,
-                                   params.height_min_head_distance_h * head_height_m};
+      region_rails(result.hair_mesh, result.painted_flow, edge_faces, topologies, along,
+                   head_distance, params, head_height_m, result.stats);
+  OrientationThresholds thresholds;
+  thresholds.vertex_order_min_vote = params.vertex_order_min_vote;
+  thresholds.scalp_distance_min_slope = params.scalp_distance_min_slope;
+  thresholds.uv_min_growth = params.uv_min_growth;
+  thresholds.height_min_slope = params.height_min_slope;
+  thresholds.height_min_head_distance_m = params.height_min_head_distance_h * head_height_m;
+  thresholds.alpha_fade_min_fall = params.alpha_fade_min_fall;
+
+  // Patches whose rails would cross the paint are cut into strands along it instead;
+  // their rails take no part in the orientation of the others.
+  std::vector<std::optional<PatchStreamlines>> streamlines(topologies.size());
+#pragma omp parallel for schedule(dynamic)
+  for (int32_t p = 0; p < patches.patch_count(); ++p)
+    if (rails_cross_the_paint(topologies[p], paint[p], along[p], params))
+      streamlines[p] = oriented_streamlines(result.hair_mesh, result.painted_flow,
+                                            patches.patch_faces[p], head_distance, thresholds);
+  for (RegionRails& region : regions)
+    if (streamlines[static_cast<size_t>(region.patch)]) {
+      region.open_rails.clear();
+      region.parted_rails.clear();
+    }
+  result.stats.patches_traced_along_paint = std::count_if(
+      streamlines.begin(), streamlines.end(), [](const auto& traced) { return traced.has_value(); });
   decide_directions(vertices, regions, thresholds, params, head_height_m, result.stats);
-  group_strands(patches, topologies, along, regions, head_distance, thresholds, result);
+  group_strands(patches, topologies, along, regions, streamlines, head_distance, thresholds, result);
 
   result.scalp_triangle =
       scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,

@@ -24,6 +24,17 @@ struct ExtractParams {
   /// Ratio of mean chain lengths of the two edge families above which the longer
   /// family is taken as running along the hair, whatever the texture says.
   double along_length_ratio = 1.5;
+  /// The painted flow chooses a region's rails, before chain length, when both its edge
+  /// families lie this share of their length beside faces whose paint is clear...
+  double along_paint_min_judged_share = 0.5;
+  /// ...and one runs along the paint on this much more of its length than the other.
+  double along_paint_min_gap = 0.25;
+  /// A patch whose chosen rails run along its clear paint on less than this share of
+  /// their length is cut into strands traced along the paint instead.
+  double streamline_max_along_share = 0.6;
+  /// Mean fall of the painted alpha along a region's rails, per face crossed (alpha
+  /// 0 to 1), from which the fade decides root from tip (OrientationRule::alpha_fade).
+  double alpha_fade_min_fall = 0.05;
   /// A rail votes on vertex order when at least this fraction of its steps go the
   /// same way (ids growing or falling).
   double ordered_rail_fraction = 0.95;
@@ -57,7 +68,11 @@ struct ExtractParams {
 };
 
 /// How the along family of a quad region was chosen.
-enum class AlongRule : int8_t { chain_length = 0, texture_axis = 1 };
+enum class AlongRule : int8_t {
+  chain_length = 0,  ///< the family with clearly longer chains
+  texture_axis = 1,  ///< the texture axis the mesh's clear regions run along
+  painted_flow = 2,  ///< the family that runs along the strokes painted on its faces
+};
 
 /// Counts for the log and the closing report.
 struct ExtractStats {
@@ -67,7 +82,12 @@ struct ExtractStats {
   int64_t rails_parted = 0;       ///< closed or draped rails cut in two at their top
   int64_t fragments_dropped = 0;  ///< along-chains too short to be rails
   int64_t family_conflicts = 0;
-  std::array<int64_t, 6> groups_by_rule{};  ///< indexed by OrientationRule
+  std::array<int64_t, 7> groups_by_rule{};  ///< indexed by OrientationRule
+  std::array<int64_t, 3> regions_by_along_rule{};  ///< indexed by AlongRule
+  /// Regions whose rails the paint chose against what chain length alone would choose.
+  int64_t regions_turned_by_paint = 0;
+  /// Patches cut into strands along the paint (their rails crossed it).
+  int64_t patches_traced_along_paint = 0;
   std::array<int64_t, 5> groups_by_kind{};  ///< indexed by PatchKind
   bool vertex_order_trusted = true;
   int uv_growth_sign = 0;  ///< the mesh's texture convention: +1, -1, or 0 for none
@@ -87,8 +107,7 @@ struct ExtractResult {
   PolyMesh hair_mesh;               ///< cleaned, scaled, triangles paired into quads
   std::vector<int32_t> face_group;  ///< #faces of hair_mesh
   /// The flow painted in the mesh's textures, per face of hair_mesh (painted_flow(); all
-  /// zero for a mesh without textures). extract_strands() leaves it empty: it reads no
-  /// file; the stage fills it.
+  /// zero for a mesh without textures).
   PaintedFlow painted_flow;
 
   Points3f body_vertices;               ///< #body vertices x 3
@@ -103,12 +122,16 @@ struct ExtractResult {
 
 /// Reads the input strands of a hair mesh (paper section 4.1): one strand group per
 /// patch, one strand per rail, every strand oriented root to tip; and measures the
-/// body: its head height H, the head region and the scalp. Pure: no file access;
-/// the file names only label errors. Deterministic for any thread count.
+/// body: its head height H, the head region and the scalp. `textures` are the hair
+/// mesh's materials' images (load_painted_textures() of hair_mesh.materials; empty for
+/// none): their painted flow chooses rails and tells roots from tips where it is clear.
+/// Pure: no file access; the file names only label errors. Deterministic for any thread
+/// count.
 ///
 /// Throws hair::Error (bad_input) for empty or degenerate meshes and non-finite
 /// coordinates, naming the file.
 ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
-                              const std::string& hair_file, const std::string& body_file);
+                              const std::string& hair_file, const std::string& body_file,
+                              const PaintedTextures& textures = {});
 
 }  // namespace hair

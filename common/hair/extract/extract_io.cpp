@@ -18,7 +18,8 @@ const h5::EnumMembers& patch_kind_members() {
 const h5::EnumMembers& orientation_rule_members() {
   static const h5::EnumMembers members = {{"vertex_order", 0}, {"scalp_distance", 1},
                                           {"continuation", 2}, {"uv", 3},
-                                          {"height", 4},       {"parting", 5}};
+                                          {"height", 4},       {"parting", 5},
+                                          {"alpha_fade", 6}};
   return members;
 }
 
@@ -51,7 +52,7 @@ void write_extract_file(h5::File& file, const ExtractResult& result, const Extra
   const auto faces = static_cast<size_t>(mesh.face_count());
   Points3f face_flow = Points3f::Zero(mesh.face_count(), 3);
   std::vector<float> coherence(faces, 0.0f), alpha_fall(faces, 0.0f);
-  if (flow.direction.size() == faces) {  // extract_strands() alone leaves it empty
+  if (flow.direction.size() == faces) {
     for (size_t f = 0; f < faces; ++f) face_flow.row(static_cast<Eigen::Index>(f)) = flow.direction[f].transpose();
     coherence = flow.coherence;
     alpha_fall = flow.alpha_fall;

@@ -21,6 +21,22 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "ratio of mean chain lengths of a patch's two edge families above which the "
              "longer runs along the hair whatever the texture says",
              ParamRange::at_least(1));
+  params.add("along_paint_min_judged_share", p.along_paint_min_judged_share,
+             "the painted flow chooses a region's rails when both its edge families lie this "
+             "share of their length beside faces whose paint is clear...",
+             ParamRange::closed(0, 1));
+  params.add("along_paint_min_gap", p.along_paint_min_gap,
+             "...and one family runs along the paint on this much more of its length than the "
+             "other (shares, 0 to 1)",
+             ParamRange::closed(0, 1));
+  params.add("streamline_max_along_share", p.streamline_max_along_share,
+             "a patch whose rails run along its clear paint on less than this share of their "
+             "length is cut into strands traced along the paint instead",
+             ParamRange::closed(0, 1));
+  params.add("alpha_fade_min_fall", p.alpha_fade_min_fall,
+             "mean fall of the painted alpha along a region's rails (0 to 1 across a face) "
+             "from which the fade tells root from tip",
+             ParamRange::above(0));
   params.add("min_rail_length_share", p.min_rail_length_share,
              "along-chains shorter than this share of their region's longest are dropped "
              "as fragments",
@@ -68,6 +84,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              ParamRange::closed(0, 1));
   params.add("flow_window_px", p.painted_flow.window_px,
              "painted flow: Gaussian window of the texture's structure tensor, texels",
+             ParamRange::above(0));
+  params.add("flow_stroke_scale_px", p.painted_flow.stroke_scale_px,
+             "painted flow: detail finer than this Gaussian sigma, texels, counts as strokes "
+             "(broader shading and highlight bands are left out)",
              ParamRange::above(0));
   params.add("flow_samples_per_side", p.painted_flow.samples_per_side,
              "painted flow: texture samples per side of each triangle of a face",

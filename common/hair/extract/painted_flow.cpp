@@ -11,10 +11,10 @@
 #include <opencv2/imgproc.hpp>
 #include <optional>
 
+#include "hair/geom/point_index.h"
 #include "hair/geom/triangle_mesh_distance.h"
 
 namespace hair {
-namespace {
 
 /// One material's painted image as the flow reads it: per texel the structure tensor of
 /// the luminance (Jxx, Jxy, Jyy, averaged over the painted texels of a Gaussian window),
@@ -26,6 +26,8 @@ struct PaintedTexture {
   int width() const { return alpha.cols; }
   int height() const { return alpha.rows; }
 };
+
+namespace {
 
 /// The image, decoded with every channel, or an empty Mat with `problem` set.
 cv::Mat decode(const MaterialImage& image, std::string& problem) {
@@ -112,9 +114,15 @@ std::optional<PaintedTexture> load_texture(const MeshMaterial& material,
   cv::erode(painted, painted, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
   cv::Mat weight;
   painted.convertTo(weight, CV_32F, 1.0 / 255);
+  // The strokes are fine detail; shading and the highlight band an artist paints across
+  // the hair are broad, and their edges would read as strokes across it. So the tensor is
+  // taken of the luminance less its blur over `stroke_scale_px` (a high pass).
+  cv::Mat detail;
+  cv::GaussianBlur(luminance, detail, cv::Size(0, 0), params.stroke_scale_px);
+  detail = luminance - detail;
   cv::Mat gx, gy;
-  cv::Sobel(luminance, gx, CV_32F, 1, 0, 3);
-  cv::Sobel(luminance, gy, CV_32F, 0, 1, 3);
+  cv::Sobel(detail, gx, CV_32F, 1, 0, 3);
+  cv::Sobel(detail, gy, CV_32F, 0, 1, 3);
   std::vector<cv::Mat> products = {weight.mul(gx.mul(gx)), weight.mul(gx.mul(gy)),
                                    weight.mul(gy.mul(gy))};
   const cv::Size kernel(0, 0);
@@ -168,25 +176,46 @@ int64_t PaintedFlow::painted_face_count() const {
   return std::count_if(coherence.begin(), coherence.end(), [](float c) { return c > 0; });
 }
 
+bool PaintedTextures::empty() const {
+  return std::none_of(by_material.begin(), by_material.end(),
+                      [](const auto& texture) { return texture != nullptr; });
+}
+
+PaintedTextures load_painted_textures(const std::vector<MeshMaterial>& materials,
+                                      const PaintedFlowParams& params, const std::string& source) {
+  PaintedTextures textures;
+  for (const MeshMaterial& material : materials) {
+    std::optional<PaintedTexture> texture =
+        load_texture(material, params, source, textures.unreadable_images);
+    textures.by_material.push_back(
+        texture ? std::make_shared<const PaintedTexture>(std::move(*texture)) : nullptr);
+  }
+  return textures;
+}
+
 PaintedFlow painted_flow(const PolyMesh& mesh, const PaintedFlowParams& params,
                          const std::string& source) {
+  return painted_flow(mesh, load_painted_textures(mesh.materials, params, source), params);
+}
+
+PaintedFlow painted_flow(const PolyMesh& mesh, const PaintedTextures& textures,
+                         const PaintedFlowParams& params) {
   const auto faces = static_cast<size_t>(mesh.face_count());
   PaintedFlow flow;
   flow.direction.assign(faces, Eigen::Vector3f::Zero());
   flow.coherence.assign(faces, 0.0f);
   flow.alpha_fall.assign(faces, 0.0f);
+  flow.unreadable_images = textures.unreadable_images;
   if (!mesh.has_materials() || !mesh.has_uv()) return flow;
-
-  std::vector<std::optional<PaintedTexture>> textures;
-  for (const MeshMaterial& material : mesh.materials)
-    textures.push_back(load_texture(material, params, source, flow.unreadable_images));
 
   const int n = std::max(1, params.samples_per_side);
 #pragma omp parallel for schedule(dynamic, 64)
   for (int64_t face = 0; face < mesh.face_count(); ++face) {
     const int32_t material = mesh.face_material[static_cast<size_t>(face)];
-    if (material < 0 || !textures[static_cast<size_t>(material)]) continue;
-    const PaintedTexture& texture = *textures[static_cast<size_t>(material)];
+    if (material < 0 || static_cast<size_t>(material) >= textures.by_material.size() ||
+        !textures.by_material[static_cast<size_t>(material)])
+      continue;
+    const PaintedTexture& texture = *textures.by_material[static_cast<size_t>(material)];
     const std::optional<Eigen::Matrix<double, 3, 2>> jacobian = texture_jacobian(mesh, face);
     if (!jacobian) continue;
 
@@ -284,6 +313,50 @@ std::vector<int8_t> segments_along_painted_flow(const PolyMesh& mesh, const Pain
     if (end - begin > 1) along[static_cast<size_t>(begin)] = along[static_cast<size_t>(begin + 1)];
   }
   return along;
+}
+
+PaintedFlow flow_with_rails(const PolyMesh& mesh, const PaintedFlow& painted,
+                            const StrandSet& input_strands, double max_distance_m) {
+  const auto faces = static_cast<size_t>(mesh.face_count());
+  PaintedFlow flow = painted;
+  flow.direction.resize(faces, Eigen::Vector3f::Zero());
+  flow.coherence.resize(faces, 0.0f);
+  flow.alpha_fall.resize(faces, 0.0f);
+  // Segment midpoints of the input strands, and their directions.
+  std::vector<Eigen::Vector3f> directions;
+  std::vector<Eigen::Vector3f> midpoints;
+  for (int64_t s = 0; s < input_strands.strand_count(); ++s)
+    for (int64_t row = input_strands.offsets[static_cast<size_t>(s)] + 1;
+         row < input_strands.offsets[static_cast<size_t>(s) + 1]; ++row) {
+      Eigen::Vector3f a = input_strands.points.row(row - 1).transpose();
+      Eigen::Vector3f b = input_strands.points.row(row).transpose();
+      if (!((b - a).norm() > 0)) continue;
+      midpoints.push_back(0.5f * (a + b));
+      directions.push_back((b - a).normalized());
+    }
+  if (midpoints.empty()) return flow;
+  Points3f midpoint_rows(static_cast<Eigen::Index>(midpoints.size()), 3);
+  for (size_t i = 0; i < midpoints.size(); ++i)
+    midpoint_rows.row(static_cast<Eigen::Index>(i)) = midpoints[i].transpose();
+  const PointIndex index(midpoint_rows);
+#pragma omp parallel for schedule(static)
+  for (int64_t face = 0; face < mesh.face_count(); ++face) {
+    const auto f = static_cast<size_t>(face);
+    if (flow.coherence[f] >= kClearFlowCoherence) continue;
+    Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+    const int64_t first = mesh.face_offsets[f];
+    for (int c = 0; c < mesh.face_size(face); ++c)
+      centroid += mesh.vertices.row(mesh.face_vertices[static_cast<size_t>(first + c)]).transpose();
+    centroid /= static_cast<float>(mesh.face_size(face));
+    flow.direction[f] = Eigen::Vector3f::Zero();
+    flow.coherence[f] = 0;
+    for (int32_t id : index.nearest(centroid, 1))
+      if ((midpoints[static_cast<size_t>(id)] - centroid).norm() <= max_distance_m) {
+        flow.direction[f] = directions[static_cast<size_t>(id)];
+        flow.coherence[f] = 1;
+      }
+  }
+  return flow;
 }
 
 double painted_flow_agreement(const PolyMesh& mesh, const PaintedFlow& flow,

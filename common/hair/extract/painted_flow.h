@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct PaintedFlowParams {
   double min_alpha = 0.2;
   /// Gaussian window of the structure tensor and of the alpha's gradient, texels.
   double window_px = 3.0;
+  /// Detail finer than this (Gaussian sigma, texels) are strokes: the structure tensor is
+  /// taken of the luminance less its blur at this scale, so that broad shading and painted
+  /// highlight bands across the hair do not read as strokes.
+  double stroke_scale_px = 2.0;
   /// Samples per side of each of a face's triangles in texture space (n (n + 1) / 2 each).
   int samples_per_side = 3;
   /// A face is painted when at least this share of its samples falls on painted texels.
@@ -45,10 +50,32 @@ struct PaintedFlow {
   int64_t painted_face_count() const;
 };
 
-/// The painted flow of every face of `mesh` (its materials' images, read from disk or
-/// embedded). An image that is missing, unreadable, empty or not an image gives one warning
-/// naming it and leaves its faces unpainted; it never throws for that. `source` names the
-/// mesh in messages.
+struct PaintedTexture;
+
+/// The images of a mesh's materials, decoded and prepared for painted_flow() (the
+/// structure tensor of the luminance, the alpha and its gradient), one per material.
+struct PaintedTextures {
+  /// Per material of the mesh: its prepared texture, or null (no image, or unreadable).
+  std::vector<std::shared_ptr<const PaintedTexture>> by_material;
+  /// Images that could not be read, one message each (already logged as warnings).
+  std::vector<std::string> unreadable_images;
+
+  bool empty() const;
+};
+
+/// Reads and prepares the images of `materials` (from disk or embedded). An image that is
+/// missing, unreadable, empty or not an image gives one warning naming it and leaves its
+/// material without texture; it never throws for that. `source` names the mesh in messages.
+PaintedTextures load_painted_textures(const std::vector<MeshMaterial>& materials,
+                                      const PaintedFlowParams& params, const std::string& source);
+
+/// The painted flow of every face of `mesh` from its materials' prepared `textures`
+/// (load_painted_textures() of the same material list). Pure: no file access.
+PaintedFlow painted_flow(const PolyMesh& mesh, const PaintedTextures& textures,
+                         const PaintedFlowParams& params);
+
+/// Both steps: the painted flow of every face of `mesh`, its images read from disk or
+/// embedded (see load_painted_textures()).
 PaintedFlow painted_flow(const PolyMesh& mesh, const PaintedFlowParams& params,
                          const std::string& source);
 
@@ -65,6 +92,13 @@ inline constexpr double kFlowAgreementAngleDeg = 30;
 std::vector<int8_t> segments_along_painted_flow(const PolyMesh& mesh, const PaintedFlow& flow,
                                                 const StrandSet& strands, double min_coherence,
                                                 double max_angle_deg, double max_distance_m);
+
+/// The flow of every face as a user judges grown hair against: the painted flow where it
+/// is clear (coherence >= kClearFlowCoherence), else the direction of the input strand
+/// (rail) segment nearest the face's centroid within `max_distance_m`, with coherence 1;
+/// faces with neither keep no flow. `input_strands` are extract's strands.
+PaintedFlow flow_with_rails(const PolyMesh& mesh, const PaintedFlow& painted,
+                            const StrandSet& input_strands, double max_distance_m);
 
 /// The share of the judged segments of `strands` that run along the painted flow
 /// (segments_along_painted_flow()); `counted` receives how many were judged (0: the share

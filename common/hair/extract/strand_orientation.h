@@ -13,6 +13,7 @@ enum class OrientationRule : int8_t {
   uv = 3,              ///< the texture's v runs root to tip as on the mesh's other patches
   height = 4,          ///< the higher end is the root (hair falls)
   parting = 5,         ///< rails draped over the head or looped: the top is the root
+  alpha_fade = 6,      ///< the painted alpha fades out towards the tip
 };
 
 /// What a region of rails (consistently oriented chains of one patch) says about its
@@ -29,6 +30,11 @@ struct OrientationEvidence {
   std::optional<double> uv_growth = std::nullopt;
   /// sum over rails of (height of the first point - height of the last) / sum of lengths.
   double height_slope = 0;
+  /// How the painted alpha fades along the rails, in [-1, 1] (positive: it falls from
+  /// their first points to their last, so the tips lie last); nullopt without clear paint.
+  std::optional<double> alpha_fade_vote = std::nullopt;
+  /// Mean magnitude of the alpha's fall per face along the rails (0 to 1).
+  double alpha_fade_mean_fall = 0;
   /// Smallest distance of a rail end from the head, in metres: hair lying on the head
   /// (a cap, short hair brushed up) may rise from its root; hair off the head falls.
   double head_distance_min_m = 0;
@@ -41,6 +47,8 @@ struct OrientationThresholds {
   double uv_min_growth = 0.3;             ///< |uv growth| for the texture to decide
   double height_min_slope = 0.3;          ///< |height slope| to settle ids against head distance...
   double height_min_head_distance_m = 0;  ///< ...for hair at least this far off the head
+  double alpha_fade_min_fall = 0.05;      ///< mean alpha fall per face for the fade to decide...
+  double alpha_fade_min_vote = 0.6;       ///< ...when this much of it falls one way
 };
 
 /// What the rest of the mesh says, learnt from its confidently decided regions.
@@ -62,6 +70,7 @@ struct OrientationDecision {
 ///     the head, a decisive height slope settles it (hair falls; a braid's pieces weave toward and
 ///     away from the head as they cross, so there the head distance misleads);
 ///  2. else a decisive head-distance slope decides (scalp_distance);
+///  2b. else a decisive fade of the painted alpha: the tips are where it fades (alpha_fade);
 ///  3. (continuation is decided between passes, from the neighbours: see extract.cpp)
 ///  4. else the texture's v growth, if the mesh has a consistent convention (uv);
 ///  5. else the higher end is the root (height).

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "hair/core/error.h"
@@ -45,7 +46,8 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
                                    const Triangles3i& hair_triangles, const Points3f& body_vertices,
                                    const Triangles3i& body_triangles,
                                    const std::vector<uint8_t>& scalp_triangle, double head_height_m,
-                                   int64_t mesh_sample_count) {
+                                   int64_t mesh_sample_count,
+                                   const std::vector<int32_t>& hair_triangle_group) {
   if (grown.strand_count() == 0 || hair_triangles.rows() == 0 || body_triangles.rows() == 0)
     throw Error::usage("measure_grown_strands: nothing to measure");
   const double h = head_height_m;
@@ -64,7 +66,9 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
   }
   std::mt19937_64 random(1);
   std::vector<Vec3> samples(static_cast<size_t>(mesh_sample_count));
-  for (Vec3& sample : samples) {
+  std::vector<Eigen::Index> sample_triangle(samples.size());
+  for (size_t i = 0; i < samples.size(); ++i) {
+    Vec3& sample = samples[i];
     double pick = unit_draw(random) * total_area;
     auto t =
         static_cast<Eigen::Index>(std::upper_bound(area.begin(), area.end(), pick) - area.begin());
@@ -78,6 +82,7 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
          b = row3(hair_vertices, hair_triangles(t, 1)),
          c = row3(hair_vertices, hair_triangles(t, 2));
     sample = a + u * (b - a) + v * (c - a);
+    sample_triangle[i] = t;
   }
   measures.mesh_samples = mesh_sample_count;
   PointIndex grown_index(grown.points);
@@ -99,6 +104,24 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
         best = std::min(best, segment_distance(samples[i], p, row3(grown.points, row + 1)));
     }
     coverage[i] = best / h;
+  }
+  if (hair_triangle_group.size() == static_cast<size_t>(hair_triangles.rows())) {
+    std::map<int32_t, std::pair<double, int64_t>> by_group;  // sum, count
+    for (size_t i = 0; i < samples.size(); ++i) {
+      auto& [sum, count] = by_group[hair_triangle_group[static_cast<size_t>(sample_triangle[i])]];
+      sum += coverage[i];
+      ++count;
+    }
+    for (const auto& [group, sum_count] : by_group) {
+      const auto& [sum, count] = sum_count;
+      if (count < GrowMeasures::kMinGroupSamples) continue;
+      const double mean = sum / static_cast<double>(count);
+      if (measures.worst_group < 0 || mean > measures.worst_group_coverage_mean_h) {
+        measures.worst_group = group;
+        measures.worst_group_coverage_mean_h = mean;
+        measures.worst_group_samples = count;
+      }
+    }
   }
   std::tie(measures.coverage_mean_h, measures.coverage_p95_h) = mean_and_p95(coverage);
 

@@ -21,14 +21,24 @@ struct GrowMeasures {
   double inside_body_share = 0;
   /// Largest and mean distance of a root from the scalp triangles.
   double root_distance_max_h = 0, root_distance_mean_h = 0;
+  /// Coverage per group of hair triangles (when groups are given): the group whose
+  /// samples lie farthest from the grown strands on average, among groups with at least
+  /// kMinGroupSamples samples, so that a lost layer shows; -1 without groups.
+  int32_t worst_group = -1;
+  double worst_group_coverage_mean_h = 0;
+  int64_t worst_group_samples = 0;
+  static constexpr int64_t kMinGroupSamples = 20;
 };
 
-/// Measures `grown` against the hair mesh (triangles) and the body with its scalp flags.
+/// Measures `grown` against the hair mesh (triangles) and the body with its scalp flags;
+/// `hair_triangle_group` (per hair triangle, its group; may be empty) gives the coverage
+/// of the worst group.
 /// Deterministic: the mesh samples come from a fixed seed.
 GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_vertices,
                                    const Triangles3i& hair_triangles, const Points3f& body_vertices,
                                    const Triangles3i& body_triangles,
                                    const std::vector<uint8_t>& scalp_triangle, double head_height_m,
-                                   int64_t mesh_sample_count = 20000);
+                                   int64_t mesh_sample_count = 20000,
+                                   const std::vector<int32_t>& hair_triangle_group = {});
 
 }  // namespace hair

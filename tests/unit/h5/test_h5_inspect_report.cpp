@@ -20,7 +20,7 @@ TEST_F(H5InspectReportTest, ConformingFileEndsWithValid) {
         "\"min_points\": 2"}) {
     EXPECT_NE(report.text.find(expected), std::string::npos) << expected << "\n" << report.text;
   }
-  EXPECT_TRUE(report.text.ends_with("\nvalid: hairstyle.extract v2\n")) << report.text;
+  EXPECT_TRUE(report.text.ends_with("\nvalid: hairstyle.extract v3\n")) << report.text;
 }
 
 TEST_F(H5InspectReportTest, ViolationIsTheLastLine) {

@@ -157,7 +157,7 @@ TEST(SchemaRegistry, EveryEmbeddedSchemaParsesAndIsFoundByName) {
 
 TEST(SchemaRegistry, ExtractSchemaHasTheContractedDatasets) {
   const Schema& schema = Schema::find("hairstyle.extract");
-  EXPECT_EQ(schema.version, 2);
+  EXPECT_EQ(schema.version, 3);
   EXPECT_EQ(schema.dataset("/strands/points").shape_text(), "[n_points, 3]");
   EXPECT_EQ(schema.dataset("/strands/points").unit, "m");
   EXPECT_EQ(schema.dataset("/strands/offsets").constraints.csr_offsets_of, "n_points");
@@ -191,7 +191,7 @@ TEST(SchemaText, NamesEverythingAReaderNeeds) {
         "/a/x  float32 [n, 2]  finite, > 0, unit m, optional\n      X."}) {
     EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
   }
-  EXPECT_EQ(format_schema(Schema::find("hairstyle.extract")).rfind("hairstyle.extract v2\n", 0),
+  EXPECT_EQ(format_schema(Schema::find("hairstyle.extract")).rfind("hairstyle.extract v3\n", 0),
             0u);
 }
 

@@ -90,7 +90,8 @@ TEST(SynthExtract, OrientationRuleOfEveryGroupAgainstTheTruth) {
   PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
   body.vertices *= 0.1f;
   const char* rules[] = {"vertex_order", "scalp_distance", "continuation",
-                         "uv",           "height",         "parting"};
+                         "uv",           "height",         "parting",
+                         "alpha_fade"};
   const char* orders[] = {"natural", "reversed", "shuffled"};
   // (kind of patch, vertex order, rule) -> {right, wrong}
   std::map<std::string, std::array<int, 2>> counts;
