@@ -1,5 +1,7 @@
 #include "hair/extract/extract.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -251,39 +253,61 @@ Eigen::Vector3f end_direction(const Points3f& vertices, const std::vector<int32_
 ///    (convergence, as cap strands meet at the band).
 /// A region is decided when at least half of its rails have a neighbour and three
 /// quarters of their votes agree. Returns how many regions it decided.
-int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRails>& regions,
-                                float radius) {
-  constexpr float aligned = 0.5f;  // cos 60 degrees
-  std::vector<StrandEnd> ends;
-  std::vector<Eigen::Vector3f> positions;
-  auto add_ends = [&](std::vector<int32_t> rail, bool reverse, int32_t patch) {
-    if (reverse) std::reverse(rail.begin(), rail.end());
-    positions.push_back(vertices.row(rail.front()).transpose());
-    ends.push_back({true, end_direction(vertices, rail, false), patch});
-    positions.push_back(vertices.row(rail.back()).transpose());
-    ends.push_back({false, end_direction(vertices, rail, true), patch});
-  };
-  for (const RegionRails& region : regions) {
-    for (const auto& rail : region.parted_rails) add_ends(rail, false, region.patch);
-    if (region.decision)
-      for (const auto& rail : region.open_rails)
-        add_ends(rail, region.decision->reverse, region.patch);
+/// The ends of the oriented strands of decided regions and parted rails, to find what
+/// lies at a strand's end (see decide_by_continuation_once()).
+class StrandEndIndex {
+ public:
+  /// Every region's ends, but those of patches with `leave_out` set (may be empty).
+  StrandEndIndex(const Points3f& vertices, const std::vector<RegionRails>& regions,
+                 const std::vector<bool>& leave_out = {}) {
+    std::vector<Eigen::Vector3f> positions;
+    auto add_ends = [&](std::vector<int32_t> rail, bool reverse, int32_t patch) {
+      if (reverse) std::reverse(rail.begin(), rail.end());
+      positions.push_back(vertices.row(rail.front()).transpose());
+      ends_.push_back({true, end_direction(vertices, rail, false), patch});
+      positions.push_back(vertices.row(rail.back()).transpose());
+      ends_.push_back({false, end_direction(vertices, rail, true), patch});
+    };
+    for (const RegionRails& region : regions) {
+      if (!leave_out.empty() && leave_out[static_cast<size_t>(region.patch)]) continue;
+      for (const auto& rail : region.parted_rails) add_ends(rail, false, region.patch);
+      if (region.decision)
+        for (const auto& rail : region.open_rails)
+          add_ends(rail, region.decision->reverse, region.patch);
+    }
+    if (ends_.empty()) return;
+    Points3f end_points(static_cast<Eigen::Index>(positions.size()), 3);
+    for (size_t i = 0; i < positions.size(); ++i)
+      end_points.row(static_cast<Eigen::Index>(i)) = positions[i].transpose();
+    index_.emplace(end_points);
   }
-  if (ends.empty()) return 0;
-  Points3f end_points(static_cast<Eigen::Index>(positions.size()), 3);
-  for (size_t i = 0; i < positions.size(); ++i)
-    end_points.row(static_cast<Eigen::Index>(i)) = positions[i].transpose();
-  PointIndex index(end_points);
 
-  // +1: this end of the rail is its root; -1: its tip; 0: no neighbour.
-  auto end_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch) {
-    for (int32_t id : index.within(point, radius)) {  // nearest first
-      const StrandEnd& other = ends[id];
+  /// What the nearest end of another patch's strand within `radius` of `point` says of a
+  /// strand end there whose outward direction is `outward`: +1 it is a root, -1 a tip,
+  /// 0 no neighbour.
+  int vote(const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch,
+           float radius) const {
+    constexpr float aligned = 0.5f;  // cos 60 degrees
+    if (!index_) return 0;
+    for (int32_t id : index_->within(point, radius)) {  // nearest first
+      const StrandEnd& other = ends_[static_cast<size_t>(id)];
       if (other.patch == patch) continue;
       if (other.is_root) return -1;
       return -outward.dot(other.flow) > aligned ? 1 : -1;
     }
     return 0;
+  }
+
+ private:
+  std::vector<StrandEnd> ends_;
+  std::optional<PointIndex> index_;
+};
+
+int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRails>& regions,
+                                float radius) {
+  const StrandEndIndex ends(vertices, regions);
+  auto end_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch) {
+    return ends.vote(point, outward, patch, radius);
   };
 
   std::vector<std::optional<OrientationDecision>> decided(regions.size());
@@ -501,48 +525,202 @@ double median_edge_length(const PolyMesh& mesh, std::span<const int64_t> faces) 
   return lengths[lengths.size() / 2];
 }
 
-/// The streamlines of a patch whose rails cross its paint, each oriented on its own
-/// (head distance, alpha fade, height: decide_orientation() without conventions); the
-/// group's rule is the most common one, its confidence the mean.
-PatchStreamlines oriented_streamlines(const PolyMesh& mesh, const PaintedFlow& flow,
-                                      std::span<const int64_t> faces,
+/// The oriented segments of a patch's decided rails: midpoints and unit directions.
+struct RailSegments {
+  std::vector<Eigen::Vector3f> direction;
+  Points3f midpoint;
+};
+
+RailSegments decided_rail_segments(const Points3f& vertices,
+                                   std::span<const RegionRails> patch_regions) {
+  std::vector<Eigen::Vector3f> midpoints;
+  RailSegments segments;
+  auto add = [&](const std::vector<int32_t>& rail, bool reverse) {
+    for (size_t i = 1; i < rail.size(); ++i) {
+      Eigen::Vector3f a = vertices.row(rail[i - 1]).transpose(), b = vertices.row(rail[i]).transpose();
+      if (!((b - a).norm() > 0)) continue;
+      midpoints.push_back(0.5f * (a + b));
+      segments.direction.push_back((reverse ? a - b : b - a).normalized());
+    }
+  };
+  for (const RegionRails& region : patch_regions) {
+    for (const auto& rail : region.open_rails) add(rail, region.decision && region.decision->reverse);
+    for (const auto& rail : region.parted_rails) add(rail, false);
+  }
+  segments.midpoint.resize(static_cast<Eigen::Index>(midpoints.size()), 3);
+  for (size_t i = 0; i < midpoints.size(); ++i)
+    segments.midpoint.row(static_cast<Eigen::Index>(i)) = midpoints[i].transpose();
+  return segments;
+}
+
+/// The streamlines of a patch whose rails cross its paint, oriented. A streamline with an
+/// end at another patch's strand end (`other_ends`, within `near_m`) is oriented by
+/// continuation, as rails are (decide_by_continuation_once()). Otherwise, where the patch's
+/// decided rails say which way the hair runs near a streamline (the mean cosine between
+/// its segments and the nearest rail segments, within `near_m`, is at least 0.3 either
+/// way), the streamline follows them, so that what decided the rails (continuation into a
+/// band, vertex order) decides it too; otherwise it is oriented on its own (head distance,
+/// alpha fade, height: decide_orientation() without conventions). The group's decision is
+/// `rails_decision` when most streamlines followed the rails, else their most common rule.
+/// Sum over the segments of `points` of the cosine with the nearest of `directions`
+/// (at `midpoints`) within `radius`; `judged` receives how many segments had one.
+double agreement_with(const Points3f& points, const PointIndex& index,
+                      const std::vector<Eigen::Vector3f>& directions, float radius, int& judged) {
+  double cosine_sum = 0;
+  judged = 0;
+  for (Eigen::Index i = 1; i < points.rows(); ++i) {
+    Eigen::Vector3f segment = points.row(i) - points.row(i - 1);
+    if (!(segment.norm() > 0)) continue;
+    Eigen::Vector3f midpoint = 0.5f * (points.row(i) + points.row(i - 1)).transpose();
+    for (int32_t id : index.within(midpoint, radius)) {
+      cosine_sum += segment.normalized().dot(directions[static_cast<size_t>(id)]);
+      ++judged;
+      break;  // the nearest
+    }
+  }
+  return cosine_sum;
+}
+
+/// The direction streamline `points` gets from its own ends and shape: head distance,
+/// alpha fade, height (decide_orientation() without conventions).
+OrientationDecision own_orientation(const PaintedStreamline& line,
+                                    const TriangleMeshDistance& head_distance,
+                                    const OrientationThresholds& thresholds) {
+  const Points3f& points = line.points;
+  Eigen::Vector3d first = points.row(0).cast<double>().transpose();
+  Eigen::Vector3d last = points.row(points.rows() - 1).cast<double>().transpose();
+  double length = 0;
+  for (Eigen::Index i = 1; i < points.rows(); ++i)
+    length += (points.row(i) - points.row(i - 1)).cast<double>().norm();
+  OrientationEvidence evidence;
+  const double first_distance = head_distance.distance(first);
+  const double last_distance = head_distance.distance(last);
+  evidence.scalp_distance_slope = (last_distance - first_distance) / std::max(1e-12, length);
+  evidence.height_slope = (first.y() - last.y()) / std::max(1e-12, length);
+  evidence.head_distance_min_m = std::min(first_distance, last_distance);
+  if (line.fade_mean_fall > 0) {
+    evidence.alpha_fade_vote = line.fade_vote;
+    evidence.alpha_fade_mean_fall = line.fade_mean_fall;
+  }
+  return *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
+}
+
+PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int32_t patch,
+                                      const StrandEndIndex& other_ends, const RailSegments& rails,
+                                      const OrientationDecision& rails_decision, double near_m,
                                       const TriangleMeshDistance& head_distance,
                                       const OrientationThresholds& thresholds) {
-  StreamlineParams params;
-  params.spacing_m = std::max(1e-6, median_edge_length(mesh, faces));
-  params.min_length_m = 2 * params.spacing_m;
+  constexpr double min_mean_cosine = 0.3;
+  const auto radius = static_cast<float>(near_m);
+  const size_t count = lines.size();
+  std::vector<int> sense(count, 0);  // +1 as traced, -1 reversed, 0 undecided
+  int continued = 0, followed_rails = 0;
+
+  // The patch's own decided rails, where they say which way the hair runs near a
+  // streamline.
+  auto follow_rails = [&] {
+    if (rails.midpoint.rows() == 0) return;
+    const PointIndex rail_index(rails.midpoint);
+    for (size_t i = 0; i < count; ++i) {
+      if (sense[i] != 0) continue;
+      int judged = 0;
+      const double cosine_sum =
+          agreement_with(lines[i].points, rail_index, rails.direction, radius, judged);
+      if (judged >= 2 && std::abs(cosine_sum) >= min_mean_cosine * judged) {
+        sense[i] = cosine_sum > 0 ? 1 : -1;
+        ++followed_rails;
+      }
+    }
+  };
+  // 0. Rails decided by a confident rule (vertex order, head distance, continuation,
+  // parting) come first: a braid's pieces weave past each other's ends, so what lies at a
+  // streamline's ends says less there than the piece's rails.
+  const bool rails_confident = rails_decision.rule == OrientationRule::vertex_order ||
+                               rails_decision.rule == OrientationRule::scalp_distance ||
+                               rails_decision.rule == OrientationRule::continuation ||
+                               rails_decision.rule == OrientationRule::parting;
+  if (rails_confident) follow_rails();
+
+  // 1. Continuation at the ends: the strands of other patches there.
+  for (size_t i = 0; i < count; ++i) {
+    if (sense[i] != 0) continue;
+    const Points3f& points = lines[i].points;
+    const Eigen::Index n = points.rows();
+    const Eigen::Vector3f first = points.row(0).transpose(), last = points.row(n - 1).transpose();
+    const int score =
+        other_ends.vote(first, (first - Eigen::Vector3f(points.row(1).transpose())).normalized(),
+                        patch, radius) -
+        other_ends.vote(last, (last - Eigen::Vector3f(points.row(n - 2).transpose())).normalized(),
+                        patch, radius);
+    if (score != 0) {
+      sense[i] = score > 0 ? 1 : -1;
+      ++continued;
+    }
+  }
+  // 2. ...carried through the patch: a streamline runs the way its decided neighbours do
+  // (the paint's flow is smooth), in rounds, so that it spreads across a cap.
+  for (int round = 0; round < 32 && continued + followed_rails > 0; ++round) {
+    std::vector<Eigen::Vector3f> directions, midpoints;
+    for (size_t i = 0; i < count; ++i) {
+      if (sense[i] == 0) continue;
+      const Points3f& points = lines[i].points;
+      for (Eigen::Index k = 1; k < points.rows(); ++k) {
+        Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
+        if (!(segment.norm() > 0)) continue;
+        directions.push_back(static_cast<float>(sense[i]) * segment.normalized());
+        midpoints.push_back(0.5f * (points.row(k) + points.row(k - 1)).transpose());
+      }
+    }
+    Points3f midpoint_rows(static_cast<Eigen::Index>(midpoints.size()), 3);
+    for (size_t k = 0; k < midpoints.size(); ++k)
+      midpoint_rows.row(static_cast<Eigen::Index>(k)) = midpoints[k].transpose();
+    const PointIndex index(midpoint_rows);
+    int decided = 0;
+    std::vector<int> next = sense;
+    for (size_t i = 0; i < count; ++i) {
+      if (sense[i] != 0) continue;
+      int judged = 0;
+      const double cosine_sum = agreement_with(lines[i].points, index, directions, 2 * radius, judged);
+      if (judged >= 2 && std::abs(cosine_sum) >= min_mean_cosine * judged) {
+        next[i] = cosine_sum > 0 ? 1 : -1;
+        ++decided;
+      }
+    }
+    sense = std::move(next);
+    continued += decided;
+    if (decided == 0) break;
+  }
+  // 3. Else the patch's rails, decided by a weaker rule (uv, height, alpha fade).
+  if (!rails_confident) follow_rails();
+  // 4. Each remaining streamline on its own.
   PatchStreamlines result;
   std::array<int, 7> rule_count{};
   double confidence_sum = 0;
-  for (PaintedStreamline& line : painted_streamlines(mesh, flow, faces, params)) {
-    Points3f& points = line.points;
-    Eigen::Vector3d first = points.row(0).cast<double>().transpose();
-    Eigen::Vector3d last = points.row(points.rows() - 1).cast<double>().transpose();
-    double length = 0;
-    for (Eigen::Index i = 1; i < points.rows(); ++i)
-      length += (points.row(i) - points.row(i - 1)).cast<double>().norm();
-    OrientationEvidence evidence;
-    const double first_distance = head_distance.distance(first);
-    const double last_distance = head_distance.distance(last);
-    evidence.scalp_distance_slope = (last_distance - first_distance) / length;
-    evidence.height_slope = (first.y() - last.y()) / length;
-    evidence.head_distance_min_m = std::min(first_distance, last_distance);
-    if (line.fade_mean_fall > 0) {
-      evidence.alpha_fade_vote = line.fade_vote;
-      evidence.alpha_fade_mean_fall = line.fade_mean_fall;
+  int on_their_own = 0;
+  for (size_t i = 0; i < count; ++i) {
+    if (sense[i] == 0) {
+      const OrientationDecision decision = own_orientation(lines[i], head_distance, thresholds);
+      sense[i] = decision.reverse ? -1 : 1;
+      ++rule_count[static_cast<size_t>(decision.rule)];
+      confidence_sum += decision.confidence;
+      ++on_their_own;
     }
-    OrientationDecision decision =
-        *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
-    if (decision.reverse) points = points.colwise().reverse().eval();
-    ++rule_count[static_cast<size_t>(decision.rule)];
-    confidence_sum += decision.confidence;
+    Points3f& points = lines[i].points;
+    if (sense[i] < 0) points = points.colwise().reverse().eval();
     result.polylines.push_back(std::move(points));
   }
-  if (!result.polylines.empty()) {
+  spdlog::debug("patch {}: {} streamlines continue others or their neighbours, {} follow the "
+                "rails, {} on their own",
+                patch, continued, followed_rails, on_their_own);
+  if (continued >= std::max(followed_rails, on_their_own)) {
+    result.decision = OrientationDecision{false, OrientationRule::continuation,
+                                          static_cast<float>(continued) / static_cast<float>(count)};
+  } else if (followed_rails >= on_their_own) {
+    result.decision = rails_decision;
+  } else {
     result.decision.rule = static_cast<OrientationRule>(
         std::max_element(rule_count.begin(), rule_count.end()) - rule_count.begin());
-    result.decision.confidence =
-        static_cast<float>(confidence_sum / static_cast<double>(result.polylines.size()));
+    result.decision.confidence = static_cast<float>(confidence_sum / on_their_own);
   }
   return result;
 }
@@ -552,12 +730,15 @@ PatchStreamlines oriented_streamlines(const PolyMesh& mesh, const PaintedFlow& f
 /// confidence (those of its region with the most rails) into `result`.
 void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>& topologies,
                    const std::vector<std::vector<int>>& along, std::vector<RegionRails>& regions,
-                   const std::vector<std::optional<PatchStreamlines>>& streamlines,
-                   const TriangleMeshDistance& head_distance,
+                   std::vector<std::optional<std::vector<PaintedStreamline>>> traced,
+                   double near_m, const TriangleMeshDistance& head_distance,
                    const OrientationThresholds& thresholds, ExtractResult& result) {
   const Points3f& vertices = result.hair_mesh.vertices;
   std::vector<Points3f> polylines;
   std::vector<int32_t> strand_group, strand_rail, source_vertex;
+  std::vector<bool> is_traced(traced.size());
+  for (size_t p = 0; p < traced.size(); ++p) is_traced[p] = traced[p].has_value();
+  const StrandEndIndex untraced_ends(vertices, regions, is_traced);
   size_t next_region = 0;
   for (int32_t p = 0; p < patches.patch_count(); ++p) {
     int32_t rail_in_patch = 0;
@@ -568,13 +749,17 @@ void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>&
       strand_group.push_back(p);
       strand_rail.push_back(rail_in_patch++);
     };
+    const size_t first_region = next_region;
+    const bool traced_patch = traced[static_cast<size_t>(p)] && !traced[static_cast<size_t>(p)]->empty();
     for (; next_region < regions.size() && regions[next_region].patch == p; ++next_region) {
       RegionRails& region = regions[next_region];
-      for (auto& rail : region.open_rails) {
-        if (region.decision->reverse) std::reverse(rail.begin(), rail.end());
-        add_rail(rail);
+      if (!traced_patch) {
+        for (auto& rail : region.open_rails) {
+          if (region.decision->reverse) std::reverse(rail.begin(), rail.end());
+          add_rail(rail);
+        }
+        for (const auto& rail : region.parted_rails) add_rail(rail);
       }
-      for (const auto& rail : region.parted_rails) add_rail(rail);
       size_t rail_count = region.open_rails.size() + region.parted_rails.size();
       if (rail_count > largest_rail_count) {
         largest_rail_count = rail_count;
@@ -583,14 +768,19 @@ void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>&
                              : OrientationDecision{false, OrientationRule::parting, 1.0f};
       }
     }
-    if (const auto& traced = streamlines[static_cast<size_t>(p)]; traced && !traced->polylines.empty()) {
-      for (const Points3f& polyline : traced->polylines) {
+    if (traced_patch) {
+      PatchStreamlines oriented = oriented_streamlines(
+          std::move(*traced[static_cast<size_t>(p)]), p, untraced_ends,
+          decided_rail_segments(vertices, std::span<const RegionRails>(regions).subspan(
+                                              first_region, next_region - first_region)),
+          group_decision, near_m, head_distance, thresholds);
+      for (Points3f& polyline : oriented.polylines) {
         source_vertex.insert(source_vertex.end(), static_cast<size_t>(polyline.rows()), -1);
-        polylines.push_back(polyline);
+        polylines.push_back(std::move(polyline));
         strand_group.push_back(p);
         strand_rail.push_back(rail_in_patch++);
       }
-      group_decision = traced->decision;
+      group_decision = oriented.decision;
     }
     PatchKind kind = patch_kind(topologies[p], along[p]);
     if (rail_in_patch == 0 || kind == PatchKind::triangle_soup) {
@@ -658,13 +848,15 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
 
   // The painted flow, and the family of each region that runs along the hair.
   result.painted_flow = painted_flow(result.hair_mesh, textures, params.painted_flow);
+  const PaintedFlow no_flow;
+  const PaintedFlow& guiding_flow = params.paint_guides_strands ? result.painted_flow : no_flow;
   const EdgeFaces edge_faces(result.hair_mesh);
-  const auto paint = family_paint(result.hair_mesh, result.painted_flow, edge_faces, topologies);
+  const auto paint = family_paint(result.hair_mesh, guiding_flow, edge_faces, topologies);
   std::vector<std::vector<int>> along = along_families(topologies, paint, params, result.stats);
 
   // Rails, their directions, and the strands group by group.
   std::vector<RegionRails> regions =
-      region_rails(result.hair_mesh, result.painted_flow, edge_faces, topologies, along,
+      region_rails(result.hair_mesh, guiding_flow, edge_faces, topologies, along,
                    head_distance, params, head_height_m, result.stats);
   OrientationThresholds thresholds;
   thresholds.vertex_order_min_vote = params.vertex_order_min_vote;
@@ -675,22 +867,30 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   thresholds.alpha_fade_min_fall = params.alpha_fade_min_fall;
 
   // Patches whose rails would cross the paint are cut into strands along it instead;
-  // their rails take no part in the orientation of the others.
-  std::vector<std::optional<PatchStreamlines>> streamlines(topologies.size());
+  // their rails still take part in deciding directions, and orient the strands. Tubes
+  // (braid pieces) keep their rails: the strokes painted on a braid's pieces twist
+  // around them, while the bundle runs along the tube.
+  std::vector<std::optional<std::vector<PaintedStreamline>>> traced(topologies.size());
 #pragma omp parallel for schedule(dynamic)
   for (int32_t p = 0; p < patches.patch_count(); ++p)
-    if (rails_cross_the_paint(topologies[p], paint[p], along[p], params))
-      streamlines[p] = oriented_streamlines(result.hair_mesh, result.painted_flow,
-                                            patches.patch_faces[p], head_distance, thresholds);
-  for (RegionRails& region : regions)
-    if (streamlines[static_cast<size_t>(region.patch)]) {
-      region.open_rails.clear();
-      region.parted_rails.clear();
+    if (patch_kind(topologies[p], along[p]) != PatchKind::tube &&
+        rails_cross_the_paint(topologies[p], paint[p], along[p], params)) {
+      StreamlineParams streamline_params;
+      streamline_params.spacing_m =
+          std::max(1e-6, median_edge_length(result.hair_mesh, patches.patch_faces[p]));
+      streamline_params.min_length_m = 2 * streamline_params.spacing_m;
+      traced[p] = painted_streamlines(result.hair_mesh, result.painted_flow,
+                                      patches.patch_faces[p], streamline_params);
     }
-  result.stats.patches_traced_along_paint = std::count_if(
-      streamlines.begin(), streamlines.end(), [](const auto& traced) { return traced.has_value(); });
+  for (int32_t p = 0; p < patches.patch_count(); ++p)
+    if (traced[static_cast<size_t>(p)]) {
+      ++result.stats.patches_traced_along_paint;
+      spdlog::debug("{}: patch {} ({} faces) traced along its paint: {} strands", hair_file, p,
+                    patches.patch_faces[p].size(), traced[static_cast<size_t>(p)]->size());
+    }
   decide_directions(vertices, regions, thresholds, params, head_height_m, result.stats);
-  group_strands(patches, topologies, along, regions, streamlines, head_distance, thresholds, result);
+  group_strands(patches, topologies, along, regions, std::move(traced),
+                params.continuation_radius_h * head_height_m, head_distance, thresholds, result);
 
   result.scalp_triangle =
       scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,

@@ -24,6 +24,9 @@ struct ExtractParams {
   /// Ratio of mean chain lengths of the two edge families above which the longer
   /// family is taken as running along the hair, whatever the texture says.
   double along_length_ratio = 1.5;
+  /// Whether the painted flow chooses rails, traces patches and orients strands; false
+  /// reads the mesh as if it had no textures (the flow is still measured and written).
+  bool paint_guides_strands = true;
   /// The painted flow chooses a region's rails, before chain length, when both its edge
   /// families lie this share of their length beside faces whose paint is clear...
   double along_paint_min_judged_share = 0.5;
@@ -31,7 +34,7 @@ struct ExtractParams {
   double along_paint_min_gap = 0.25;
   /// A patch whose chosen rails run along its clear paint on less than this share of
   /// their length is cut into strands traced along the paint instead.
-  double streamline_max_along_share = 0.6;
+  double streamline_max_along_share = 0.8;
   /// Mean fall of the painted alpha along a region's rails, per face crossed (alpha
   /// 0 to 1), from which the fade decides root from tip (OrientationRule::alpha_fade).
   double alpha_fade_min_fall = 0.05;

@@ -21,6 +21,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "ratio of mean chain lengths of a patch's two edge families above which the "
              "longer runs along the hair whatever the texture says",
              ParamRange::at_least(1));
+  params.add("paint_guides_strands", p.paint_guides_strands,
+             "the flow painted in the mesh's textures chooses rails, traces patches whose rails "
+             "cross it and orients strands; false reads the mesh as if untextured (the flow is "
+             "still measured and written)");
   params.add("along_paint_min_judged_share", p.along_paint_min_judged_share,
              "the painted flow chooses a region's rails when both its edge families lie this "
              "share of their length beside faces whose paint is clear...",

@@ -36,11 +36,11 @@ std::optional<OrientationDecision> decide_orientation(
     return OrientationDecision{distance_reverse, OrientationRule::scalp_distance,
                                clamp01(std::abs(evidence.scalp_distance_slope) /
                                        (2 * thresholds.scalp_distance_min_slope))};
+  if (!conventions) return std::nullopt;
   if (evidence.alpha_fade_vote && evidence.alpha_fade_mean_fall >= thresholds.alpha_fade_min_fall &&
       std::abs(*evidence.alpha_fade_vote) >= thresholds.alpha_fade_min_vote)
     return OrientationDecision{*evidence.alpha_fade_vote < 0, OrientationRule::alpha_fade,
                                clamp01(std::abs(*evidence.alpha_fade_vote))};
-  if (!conventions) return std::nullopt;
   if (conventions->uv_growth_sign && evidence.uv_growth &&
       std::abs(*evidence.uv_growth) >= thresholds.uv_min_growth) {
     bool reverse = (*evidence.uv_growth > 0 ? 1 : -1) != *conventions->uv_growth_sign;

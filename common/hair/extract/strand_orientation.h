@@ -70,11 +70,13 @@ struct OrientationDecision {
 ///     the head, a decisive height slope settles it (hair falls; a braid's pieces weave toward and
 ///     away from the head as they cross, so there the head distance misleads);
 ///  2. else a decisive head-distance slope decides (scalp_distance);
-///  2b. else a decisive fade of the painted alpha: the tips are where it fades (alpha_fade);
 ///  3. (continuation is decided between passes, from the neighbours: see extract.cpp)
+///  3b. else a decisive fade of the painted alpha: the tips are where it fades (alpha_fade);
+///     after continuation, because a patch's paint may fade towards where it meets the
+///     next patch (a cap's cards into a ponytail's band) rather than towards the tips;
 ///  4. else the texture's v growth, if the mesh has a consistent convention (uv);
 ///  5. else the higher end is the root (height).
-/// Without `conventions` (the first pass, which learns them) steps 4 and 5 return
+/// Without `conventions` (the first pass, which learns them) steps 3b, 4 and 5 return
 /// nullopt.
 std::optional<OrientationDecision> decide_orientation(
     const OrientationEvidence& evidence, const OrientationThresholds& thresholds,

@@ -20,7 +20,8 @@ namespace {
 /// Distinct colours (BGR) for categories, in the order of their enum values.
 const std::vector<cv::Vec3b>& category_colours() {
   static const std::vector<cv::Vec3b> colours = {{180, 119, 31}, {14, 127, 255},  {44, 160, 44},
-                                                 {40, 39, 214},  {189, 103, 148}, {75, 86, 140}};
+                                                 {40, 39, 214},  {189, 103, 148}, {75, 86, 140},
+                                                 {194, 119, 227}};
   return colours;
 }
 

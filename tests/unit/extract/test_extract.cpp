@@ -239,3 +239,40 @@ TEST(ExtractStrands, PatchWithoutQuadsGivesOneStrandAlongItsAxis) {
 
 }  // namespace
 }  // namespace hair
+
+namespace hair {
+namespace {
+
+TEST(DecideOrientation, AClearAlphaFadeDecidesAfterTheHeadDistanceAndContinuation) {
+  OrientationThresholds thresholds;
+  OrientationEvidence evidence;
+  evidence.alpha_fade_vote = -0.9;  // the alpha falls towards the rails' first points
+  evidence.alpha_fade_mean_fall = 0.1;
+  // Not in the first pass, which feeds continuation: only with the mesh's conventions.
+  EXPECT_FALSE(decide_orientation(evidence, thresholds, std::nullopt).has_value());
+  const MeshConventions conventions{true, 1};
+  evidence.uv_growth = 0.9;  // and before the texture's v convention
+  auto decision = decide_orientation(evidence, thresholds, conventions);
+  ASSERT_TRUE(decision.has_value());
+  EXPECT_TRUE(decision->reverse);
+  EXPECT_EQ(decision->rule, OrientationRule::alpha_fade);
+  EXPECT_NEAR(decision->confidence, 0.9, 1e-6);
+
+  // A decisive head distance comes first.
+  evidence.scalp_distance_slope = 0.5;
+  decision = decide_orientation(evidence, thresholds, conventions);
+  ASSERT_TRUE(decision.has_value());
+  EXPECT_EQ(decision->rule, OrientationRule::scalp_distance);
+  EXPECT_FALSE(decision->reverse);
+
+  // A faint or split fade does not decide: the texture's v does.
+  evidence.scalp_distance_slope = 0;
+  evidence.alpha_fade_mean_fall = 0.01;
+  EXPECT_EQ(decide_orientation(evidence, thresholds, conventions)->rule, OrientationRule::uv);
+  evidence.alpha_fade_mean_fall = 0.1;
+  evidence.alpha_fade_vote = 0.3;
+  EXPECT_EQ(decide_orientation(evidence, thresholds, conventions)->rule, OrientationRule::uv);
+}
+
+}  // namespace
+}  // namespace hair

@@ -1,6 +1,6 @@
-// extract_strands on the ten MakeHuman meshes: the patch count, valid strands, and
-// orientation checked against what anyone sees in these models (hanging hair runs
-// down; the ponytail's cap runs into the band where the tail starts).
+// extract_strands on the ten MakeHuman meshes with their painted textures: the patch
+// count, valid strands, and orientation checked against what anyone sees in these models
+// (hanging hair runs down; the ponytail's cap runs into the band where the tail starts).
 #include <gtest/gtest.h>
 
 #include <map>
@@ -19,8 +19,11 @@ ExtractResult extract_model(const std::string& model) {
   ExtractParams params;
   params.unit_scale = 0.1;
   std::filesystem::path hair = makehuman_dir() / "hair" / (model + ".obj");
-  return extract_strands(read_mesh(hair), read_mesh(makehuman_dir() / "body.obj"), params,
-                         hair.string(), "body.obj");
+  PolyMesh mesh = read_mesh(hair);
+  PaintedTextures textures = load_painted_textures(mesh.materials, params.painted_flow, model);
+  EXPECT_FALSE(textures.empty()) << model;
+  return extract_strands(std::move(mesh), read_mesh(makehuman_dir() / "body.obj"), params,
+                         hair.string(), "body.obj", textures);
 }
 
 class MakeHumanExtract : public ::testing::TestWithParam<std::pair<std::string, int>> {

@@ -3,6 +3,7 @@
 // missing or broken image is a warning and no flow, never a crash.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -76,6 +77,31 @@ TEST_F(PaintedFlowTest, TheFadeDecidesTheSenseAndTheStrokesTheAxis) {
   EXPECT_LT(diagonal.alpha_fall[0], 0.05);
 }
 
+TEST_F(PaintedFlowTest, AHighlightBandPaintedAcrossTheStrokesIsNotReadAsTheirFlow) {
+  // Faint fine vertical strokes under broad bright bands across them, as artists paint
+  // the shine on hair: the bands' edges run across the hair, are steeper on average than
+  // the strokes, and must not win.
+  const int size = 128;
+  cv::Mat image(size, size, CV_8UC4);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const double band = 110 * std::pow(std::sin(M_PI * y / 32), 2);
+      const double strokes = 6 * std::sin(2 * M_PI * x / 5);
+      auto level = static_cast<uint8_t>(std::clamp(70 + band + strokes, 0.0, 255.0));
+      image.at<cv::Vec4b>(y, x) = {level, level, level, 255};
+    }
+  cv::imwrite((directory_ / "band.png").string(), image);
+  PaintedFlow flow = painted_flow(textured_quad("band.png"), PaintedFlowParams{}, "quad");
+  ASSERT_EQ(flow.painted_face_count(), 1);
+  EXPECT_GT(std::abs(flow.direction[0].y()), std::cos(10 * M_PI / 180)) << flow.direction[0];
+  EXPECT_GT(flow.coherence[0], kClearFlowCoherence);
+  // Without the high pass (a blur far wider than the image) the bands win.
+  PaintedFlowParams no_high_pass;
+  no_high_pass.stroke_scale_px = 1000;
+  PaintedFlow banded = painted_flow(textured_quad("band.png"), no_high_pass, "quad");
+  EXPECT_GT(std::abs(banded.direction[0].x()), std::cos(10 * M_PI / 180)) << banded.direction[0];
+}
+
 TEST_F(PaintedFlowTest, UniformPaintHasNoClearFlow) {
   cv::Mat flat(64, 64, CV_8UC4, cv::Scalar(90, 60, 40, 255));
   cv::randn(flat, cv::Scalar(90, 60, 40, 255), cv::Scalar(20, 20, 20, 0));  // noise, no strokes
@@ -114,30 +140,54 @@ TEST_F(PaintedFlowTest, AMeshWithoutTextureCoordinatesOrMaterialsHasNoFlow) {
   EXPECT_EQ(flow.direction.size(), 1u);
 }
 
-/// Extract's input strands against the paint of a MakeHuman mesh.
-double input_strands_along_paint(const std::string& model, int64_t& segments) {
+/// Extract's input strands against the paint of a MakeHuman mesh, with or without its
+/// textures given to extract (without, extract chooses rails as if it had none).
+double input_strands_along_paint(const std::string& model, bool textured, int64_t& segments) {
   const std::filesystem::path data = std::filesystem::path(HAIR_SHARED_DATA_DIR) / "makehuman";
   ExtractParams params;
   params.unit_scale = 0.1;
-  ExtractResult result =
-      extract_strands(read_mesh(data / "hair" / (model + ".obj")), read_mesh(data / "body.obj"),
-                      params, model, "body");
-  PaintedFlow flow = painted_flow(result.hair_mesh, params.painted_flow, model);
-  EXPECT_GT(flow.painted_face_count(), result.hair_mesh.face_count() * 9 / 10) << model;
+  PolyMesh mesh = read_mesh(data / "hair" / (model + ".obj"));
+  PaintedTextures textures = load_painted_textures(mesh.materials, params.painted_flow, model);
+  ExtractResult result = extract_strands(std::move(mesh), read_mesh(data / "body.obj"), params,
+                                         model, "body", textured ? textures : PaintedTextures{});
+  PaintedFlow flow = painted_flow(result.hair_mesh, textures, params.painted_flow);
+  EXPECT_GT(flow.painted_face_count(), result.hair_mesh.face_count() * 3 / 4) << model;
   return painted_flow_agreement(result.hair_mesh, flow, result.strands, kClearFlowCoherence,
                                 kFlowAgreementAngleDeg, 0.1 * result.head.head_height, segments);
 }
 
-TEST(PaintedFlowMakeHuman, CardsPaintedAlongTheirRailsAgreeAndACapReadAsRingsDoesNot) {
-  // long01's cards run along their strands: the rails follow the paint. short03 is a
-  // one-piece cap whose quads run in rings around the head while its paint runs down
-  // it: the measure sees that extract's rails cross the paint (the real-meshes issue).
+TEST(PaintedFlowMakeHuman, ACapReadAsRingsWithoutItsTextureIsTracedAlongThePaintWithIt) {
+  // short03 is a one-piece cap whose quads run in rings around the head while its paint
+  // runs down it: without the texture extract's rails cross the paint; with it the cap is
+  // cut into strands along the paint.
+  if (!std::filesystem::exists(std::filesystem::path(HAIR_SHARED_DATA_DIR) / "makehuman"))
+    GTEST_SKIP();
   int64_t segments = 0;
-  EXPECT_GT(input_strands_along_paint("long01", segments), 0.8);
-  EXPECT_GT(segments, 2000);
-  EXPECT_LT(input_strands_along_paint("short03", segments), 0.2);
+  EXPECT_LT(input_strands_along_paint("short03", false, segments), 0.2);
+  EXPECT_GT(segments, 500);
+  EXPECT_GT(input_strands_along_paint("short03", true, segments), 0.9);
   EXPECT_GT(segments, 500);
 }
+
+class PaintedFlowEveryMakeHuman : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PaintedFlowEveryMakeHuman, InputStrandsRunAlongThePaint) {
+  // The real-meshes issue's target: at least 90% of the judged segments within 30 degrees
+  // of the painted flow on every mesh whose texture decides it. afro01's tiny curl cards
+  // are left out: their paint is curls smaller than a face (see docs/extract.md).
+  if (!std::filesystem::exists(std::filesystem::path(HAIR_SHARED_DATA_DIR) / "makehuman"))
+    GTEST_SKIP();
+  int64_t segments = 0;
+  const double along = input_strands_along_paint(GetParam(), true, segments);
+  std::printf("[ paint    ] %s: %.1f%% of %lld input segments along the paint\n",
+              GetParam().c_str(), 100 * along, static_cast<long long>(segments));
+  EXPECT_GE(along, 0.9);
+  EXPECT_GT(segments, 400);
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, PaintedFlowEveryMakeHuman,
+                         ::testing::Values("bob01", "bob02", "braid01", "long01", "ponytail01",
+                                           "short01", "short02", "short03", "short04"));
 
 }  // namespace
 }  // namespace hair

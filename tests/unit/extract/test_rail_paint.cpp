@@ -1,0 +1,103 @@
+// How the edge families of a quad region lie against the painted flow, and what the
+// alpha fade along rails says: on a flat grid with a flow set by hand, the family along
+// the flow is found whichever is longer, and the fade's sign follows the rails' order.
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "hair/extract/rail_paint.h"
+#include "hair/mesh/patch_rails.h"
+
+namespace hair {
+namespace {
+
+/// A flat grid of `columns` x `rows` quads in the x-y plane, `width` by `height` metres.
+PolyMesh grid(int columns, int rows, float width, float height) {
+  PolyMesh mesh;
+  mesh.vertices.resize((columns + 1) * (rows + 1), 3);
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= columns; ++i)
+      mesh.vertices.row(j * (columns + 1) + i) << width * i / columns, height * j / rows, 0.0f;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const int32_t a = j * (columns + 1) + i;
+      const int32_t corners[4] = {a, a + 1, a + columns + 2, a + columns + 1};
+      mesh.append_face(corners);
+    }
+  return mesh;
+}
+
+/// Every face's flow along `direction`, clear, with the alpha falling by `fall` along it.
+PaintedFlow uniform_flow(const PolyMesh& mesh, const Eigen::Vector3f& direction, float fall) {
+  PaintedFlow flow;
+  const auto faces = static_cast<size_t>(mesh.face_count());
+  flow.direction.assign(faces, direction.normalized());
+  flow.coherence.assign(faces, 0.9f);
+  flow.alpha_fall.assign(faces, fall);
+  return flow;
+}
+
+std::vector<int64_t> all_faces(const PolyMesh& mesh) {
+  std::vector<int64_t> faces(static_cast<size_t>(mesh.face_count()));
+  std::iota(faces.begin(), faces.end(), 0);
+  return faces;
+}
+
+/// The family whose chains run along y (the grid's columns).
+int family_along_y(const PolyMesh& mesh, const QuadRegion& region) {
+  const auto& chain = region.families[0].chains.front();
+  const Eigen::Vector3f step = mesh.vertices.row(chain[1]) - mesh.vertices.row(chain[0]);
+  return std::abs(step.y()) > std::abs(step.x()) ? 0 : 1;
+}
+
+TEST(RailPaint, TheFamilyAlongThePaintIsFoundWhereTheOtherIsLonger) {
+  // A wide grid: the rows (along x) are the longer chains, the paint runs down y, as on
+  // a cap whose rings are longer than its strands.
+  PolyMesh mesh = grid(12, 4, 0.12f, 0.04f);
+  std::vector<int64_t> faces = all_faces(mesh);
+  std::vector<PatchTopology> topologies{patch_topology(mesh, faces)};
+  ASSERT_EQ(topologies[0].regions.size(), 1u);
+  const int along_y = family_along_y(mesh, topologies[0].regions[0]);
+  ASSERT_GT(topologies[0].regions[0].families[1 - along_y].mean_chain_length,
+            topologies[0].regions[0].families[along_y].mean_chain_length);
+
+  PaintedFlow flow = uniform_flow(mesh, Eigen::Vector3f(0, -1, 0), 0.0f);
+  const auto paint = family_paint(mesh, flow, EdgeFaces(mesh), topologies);
+  const auto& families = paint[0][0];
+  EXPECT_NEAR(families[static_cast<size_t>(along_y)].judged_share, 1.0, 1e-9);
+  EXPECT_NEAR(families[static_cast<size_t>(along_y)].along_share, 1.0, 1e-9);
+  EXPECT_NEAR(families[static_cast<size_t>(1 - along_y)].along_share, 0.0, 1e-9);
+  EXPECT_EQ(family_along_paint(families, 0.5, 0.25), along_y);
+
+  // Paint at 45 degrees lies along neither: the paint does not decide.
+  PaintedFlow diagonal = uniform_flow(mesh, Eigen::Vector3f(1, 1, 0), 0.0f);
+  EXPECT_EQ(family_along_paint(family_paint(mesh, diagonal, EdgeFaces(mesh), topologies)[0][0],
+                               0.5, 0.25),
+            -1);
+  // Nor does paint that is not clear.
+  flow.coherence.assign(flow.coherence.size(), 0.1f);
+  const auto unclear = family_paint(mesh, flow, EdgeFaces(mesh), topologies)[0][0];
+  EXPECT_EQ(unclear[0].judged_share, 0.0);
+  EXPECT_EQ(family_along_paint(unclear, 0.5, 0.25), -1);
+}
+
+TEST(RailPaint, TheAlphaFadeVotesForTheRailsRunningTowardsTheTips) {
+  PolyMesh mesh = grid(2, 6, 0.02f, 0.06f);
+  EdgeFaces edge_faces(mesh);
+  // A rail down the middle column, from the top (y = 0.06) to the bottom.
+  std::vector<int32_t> down;
+  for (int j = 6; j >= 0; --j) down.push_back(j * 3 + 1);
+  std::vector<int32_t> up(down.rbegin(), down.rend());
+  PaintedFlow fading_down = uniform_flow(mesh, Eigen::Vector3f(0, -1, 0), 0.2f);
+  AlphaFade fade = rails_alpha_fade(mesh, fading_down, edge_faces, {down});
+  EXPECT_NEAR(fade.vote, 1.0, 1e-9);
+  EXPECT_NEAR(fade.mean_fall, 0.2, 1e-6);
+  EXPECT_EQ(fade.judged_edges, 6);
+  EXPECT_NEAR(rails_alpha_fade(mesh, fading_down, edge_faces, {up}).vote, -1.0, 1e-9);
+  // Without a fade the vote stays 0.
+  PaintedFlow flat = uniform_flow(mesh, Eigen::Vector3f(0, -1, 0), 0.0f);
+  EXPECT_EQ(rails_alpha_fade(mesh, flat, edge_faces, {down}).vote, 0.0);
+}
+
+}  // namespace
+}  // namespace hair
