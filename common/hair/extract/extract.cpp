@@ -614,6 +614,7 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
   const auto radius = static_cast<float>(near_m);
   const size_t count = lines.size();
   std::vector<int> sense(count, 0);  // +1 as traced, -1 reversed, 0 undecided
+  std::vector<bool> by_rails(count, false);
   int continued = 0, followed_rails = 0;
 
   // The patch's own decided rails, where they say which way the hair runs near a
@@ -628,6 +629,7 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
           agreement_with(lines[i].points, rail_index, rails.direction, radius, judged);
       if (judged >= 2 && std::abs(cosine_sum) >= min_mean_cosine * judged) {
         sense[i] = cosine_sum > 0 ? 1 : -1;
+        by_rails[i] = true;
         ++followed_rails;
       }
     }
@@ -657,6 +659,56 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
       ++continued;
     }
   }
+  // 1b. Votes at the ends must agree with each other where they are neighbours (a layered
+  // cut puts other layers' roots beside this one's roots, which reads as a tip there): if
+  // fewer than three quarters of the voting streamlines that have a voting neighbour run
+  // its way, the votes are dropped.
+  if (continued > 0) {
+    std::vector<size_t> voters;
+    for (size_t i = 0; i < count; ++i)
+      if (sense[i] != 0 && !by_rails[i]) voters.push_back(i);
+    std::vector<Eigen::Vector3f> directions, midpoints;
+    std::vector<size_t> owner;
+    for (size_t i : voters) {
+      const Points3f& points = lines[i].points;
+      for (Eigen::Index k = 1; k < points.rows(); ++k) {
+        Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
+        if (!(segment.norm() > 0)) continue;
+        directions.push_back(static_cast<float>(sense[i]) * segment.normalized());
+        midpoints.push_back(0.5f * (points.row(k) + points.row(k - 1)).transpose());
+        owner.push_back(i);
+      }
+    }
+    Points3f midpoint_rows(static_cast<Eigen::Index>(midpoints.size()), 3);
+    for (size_t k = 0; k < midpoints.size(); ++k)
+      midpoint_rows.row(static_cast<Eigen::Index>(k)) = midpoints[k].transpose();
+    const PointIndex index(midpoint_rows);
+    int with_neighbour = 0, agreeing = 0;
+    for (size_t i : voters) {
+      const Points3f& points = lines[i].points;
+      double cosine_sum = 0;
+      int judged = 0;
+      for (Eigen::Index k = 1; k < points.rows(); ++k) {
+        Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
+        if (!(segment.norm() > 0)) continue;
+        Eigen::Vector3f midpoint = 0.5f * (points.row(k) + points.row(k - 1)).transpose();
+        for (int32_t id : index.within(midpoint, 2 * radius)) {
+          if (owner[static_cast<size_t>(id)] == i) continue;
+          cosine_sum += static_cast<float>(sense[i]) * segment.normalized().dot(directions[static_cast<size_t>(id)]);
+          ++judged;
+          break;
+        }
+      }
+      if (judged < 2 || std::abs(cosine_sum) < min_mean_cosine * judged) continue;
+      ++with_neighbour;
+      agreeing += cosine_sum > 0 ? 1 : 0;
+    }
+    if (with_neighbour > 0 && agreeing < 0.75 * with_neighbour) {
+      for (size_t i : voters) sense[i] = 0;
+      continued = 0;
+    }
+  }
+
   // 2. ...carried through the patch: a streamline runs the way its decided neighbours do
   // (the paint's flow is smooth), in rounds, so that it spreads across a cap.
   for (int round = 0; round < 32 && continued + followed_rails > 0; ++round) {
