@@ -237,6 +237,23 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
   EXPECT_EQ(std::count(row_lines[0].begin(), row_lines[0].end(), '|'),
             std::count(header_lines[0].begin(), header_lines[0].end(), '|'));
 
+  // --clusters: a table of the strands of every cluster, adding up to all the strands.
+  auto clusters = run_command(report, {braid.extract.string(), braid.strands.string(), "--name",
+                                       "braid01", "--clusters"});
+  EXPECT_EQ(clusters.exit_code, 0) << clusters.err;
+  std::vector<std::string> cluster_lines = text_lines(clusters.out);
+  const auto per_cluster = hair::h5::read_vector<int64_t>(
+      hair::h5::File::open_read_only(braid.strands), "/clusters/strand_count");
+  ASSERT_EQ(cluster_lines.size(), per_cluster.size() + 2) << clusters.out;
+  int64_t listed = 0;
+  for (size_t c = 0; c < per_cluster.size(); ++c) {
+    const std::string& line = cluster_lines[c + 2];
+    EXPECT_TRUE(line.starts_with("| " + std::to_string(c) + " | " + std::to_string(per_cluster[c]) + " | "))
+        << line;
+    listed += per_cluster[c];
+  }
+  EXPECT_EQ(listed, 2000);
+
   auto missing =
       run_command(report, {braid.extract.string(), (directory() / "missing.h5").string()});
   EXPECT_EQ(missing.exit_code, 2);

@@ -508,6 +508,20 @@ bool rails_cross_the_paint(const PatchTopology& topology,
          agreeing < params.streamline_max_along_share * judged;
 }
 
+/// Whether the median distance of the vertices of `faces` from the head is at most
+/// `max_distance_m`: a cap or wig lying on the scalp, not a card or braid hanging off it.
+bool lies_on_the_head(const PolyMesh& mesh, std::span<const int64_t> faces,
+                      const TriangleMeshDistance& head_distance, double max_distance_m) {
+  std::vector<double> distances;
+  for (int64_t face : faces)
+    for (int32_t vertex : mesh.face(face))
+      distances.push_back(head_distance.distance(mesh.vertices.row(vertex).cast<double>().transpose()));
+  if (distances.empty()) return false;
+  std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2),
+                   distances.end());
+  return distances[distances.size() / 2] <= max_distance_m;
+}
+
 /// Median length of the edges of `faces`.
 double median_edge_length(const PolyMesh& mesh, std::span<const int64_t> faces) {
   std::vector<double> lengths;
@@ -919,13 +933,17 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   thresholds.alpha_fade_min_fall = params.alpha_fade_min_fall;
 
   // Patches whose rails would cross the paint are cut into strands along it instead;
-  // their rails still take part in deciding directions, and orient the strands. Tubes
-  // (braid pieces) keep their rails: the strokes painted on a braid's pieces twist
-  // around them, while the bundle runs along the tube.
+  // their rails still take part in deciding directions, and orient the strands. Only
+  // patches lying on the head are traced (caps and wigs, whose texture is unwrapped in
+  // fans while their quads run in rings); cards, tubes and braid pieces hanging off it
+  // keep their rails: the strokes painted on a braid's pieces twist around them, while
+  // the bundle runs along the piece.
   std::vector<std::optional<std::vector<PaintedStreamline>>> traced(topologies.size());
 #pragma omp parallel for schedule(dynamic)
   for (int32_t p = 0; p < patches.patch_count(); ++p)
     if (patch_kind(topologies[p], along[p]) != PatchKind::tube &&
+        lies_on_the_head(result.hair_mesh, patches.patch_faces[p], head_distance,
+                         params.streamline_max_head_distance_h * head_height_m) &&
         rails_cross_the_paint(topologies[p], paint[p], along[p], params)) {
       StreamlineParams streamline_params;
       streamline_params.spacing_m =

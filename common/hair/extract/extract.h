@@ -35,6 +35,9 @@ struct ExtractParams {
   /// A patch whose chosen rails run along its clear paint on less than this share of
   /// their length is cut into strands traced along the paint instead.
   double streamline_max_along_share = 0.8;
+  /// ...when it lies on the head: the median distance of its vertices from the head at
+  /// most this, in H (caps and wigs; hanging cards and braid pieces keep their rails).
+  double streamline_max_head_distance_h = 0.1;
   /// Mean fall of the painted alpha along a region's rails, per face crossed (alpha
   /// 0 to 1), from which the fade decides root from tip (OrientationRule::alpha_fade).
   double alpha_fade_min_fall = 0.05;

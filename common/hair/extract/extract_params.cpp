@@ -37,6 +37,11 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "a patch whose rails run along its clear paint on less than this share of their "
              "length is cut into strands traced along the paint instead",
              ParamRange::closed(0, 1));
+  params.add("streamline_max_head_distance_h", p.streamline_max_head_distance_h,
+             "...when it lies on the head: the median distance of its vertices from the head "
+             "at most this, in H (caps and wigs; hanging cards and braid pieces keep their "
+             "rails)",
+             ParamRange::at_least(0));
   params.add("alpha_fade_min_fall", p.alpha_fade_min_fall,
              "mean fall of the painted alpha along a region's rails (0 to 1 across a face) "
              "from which the fade tells root from tip",
