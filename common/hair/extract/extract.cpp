@@ -942,9 +942,9 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
 #pragma omp parallel for schedule(dynamic)
   for (int32_t p = 0; p < patches.patch_count(); ++p)
     if (patch_kind(topologies[p], along[p]) != PatchKind::tube &&
+        rails_cross_the_paint(topologies[p], paint[p], along[p], params) &&
         lies_on_the_head(result.hair_mesh, patches.patch_faces[p], head_distance,
-                         params.streamline_max_head_distance_h * head_height_m) &&
-        rails_cross_the_paint(topologies[p], paint[p], along[p], params)) {
+                         params.streamline_max_head_distance_h * head_height_m)) {
       StreamlineParams streamline_params;
       streamline_params.spacing_m =
           std::max(1e-6, median_edge_length(result.hair_mesh, patches.patch_faces[p]));
