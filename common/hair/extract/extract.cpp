@@ -539,60 +539,73 @@ double median_edge_length(const PolyMesh& mesh, std::span<const int64_t> faces) 
   return lengths[lengths.size() / 2];
 }
 
-/// The oriented segments of a patch's decided rails: midpoints and unit directions.
-struct RailSegments {
-  std::vector<Eigen::Vector3f> direction;
-  Points3f midpoint;
+/// Oriented strand segments (unit directions, each with the strand it belongs to) and an
+/// index of their midpoints, to ask which way the hair runs near a point.
+class SegmentIndex {
+ public:
+  /// Adds the segments of `points`, turned round when `sense` is negative.
+  void add(const Points3f& points, int sense, size_t owner) {
+    for (Eigen::Index k = 1; k < points.rows(); ++k) {
+      Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
+      if (!(segment.norm() > 0)) continue;
+      direction_.push_back(static_cast<float>(sense) * segment.normalized());
+      midpoints_.push_back(0.5f * (points.row(k) + points.row(k - 1)).transpose());
+      owner_.push_back(owner);
+    }
+  }
+  /// Indexes what was added; call once, after the last add().
+  void build() {
+    Points3f rows(static_cast<Eigen::Index>(midpoints_.size()), 3);
+    for (size_t k = 0; k < midpoints_.size(); ++k)
+      rows.row(static_cast<Eigen::Index>(k)) = midpoints_[k].transpose();
+    if (rows.rows() > 0) index_.emplace(rows);
+  }
+  bool empty() const { return !index_.has_value(); }
+
+  /// Sum over the segments of `points` of the cosine with the nearest indexed segment
+  /// within `radius` that does not belong to `skip_owner`; `judged` receives how many
+  /// segments had one.
+  double agreement(const Points3f& points, float radius, int& judged,
+                   std::optional<size_t> skip_owner = std::nullopt) const {
+    double cosine_sum = 0;
+    judged = 0;
+    if (!index_) return 0;
+    for (Eigen::Index k = 1; k < points.rows(); ++k) {
+      Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
+      if (!(segment.norm() > 0)) continue;
+      Eigen::Vector3f midpoint = 0.5f * (points.row(k) + points.row(k - 1)).transpose();
+      for (int32_t id : index_->within(midpoint, radius)) {
+        if (skip_owner && owner_[static_cast<size_t>(id)] == *skip_owner) continue;
+        cosine_sum += segment.normalized().dot(direction_[static_cast<size_t>(id)]);
+        ++judged;
+        break;  // the nearest
+      }
+    }
+    return cosine_sum;
+  }
+
+ private:
+  std::vector<Eigen::Vector3f> direction_, midpoints_;
+  std::vector<size_t> owner_;
+  std::optional<PointIndex> index_;
 };
 
-RailSegments decided_rail_segments(const Points3f& vertices,
+/// The segments of a patch's decided rails, oriented root to tip.
+SegmentIndex decided_rail_segments(const Points3f& vertices,
                                    std::span<const RegionRails> patch_regions) {
-  std::vector<Eigen::Vector3f> midpoints;
-  RailSegments segments;
+  SegmentIndex segments;
   auto add = [&](const std::vector<int32_t>& rail, bool reverse) {
-    for (size_t i = 1; i < rail.size(); ++i) {
-      Eigen::Vector3f a = vertices.row(rail[i - 1]).transpose(), b = vertices.row(rail[i]).transpose();
-      if (!((b - a).norm() > 0)) continue;
-      midpoints.push_back(0.5f * (a + b));
-      segments.direction.push_back((reverse ? a - b : b - a).normalized());
-    }
+    Points3f points(static_cast<Eigen::Index>(rail.size()), 3);
+    for (size_t i = 0; i < rail.size(); ++i)
+      points.row(static_cast<Eigen::Index>(i)) = vertices.row(rail[i]);
+    segments.add(points, reverse ? -1 : 1, 0);
   };
   for (const RegionRails& region : patch_regions) {
     for (const auto& rail : region.open_rails) add(rail, region.decision && region.decision->reverse);
     for (const auto& rail : region.parted_rails) add(rail, false);
   }
-  segments.midpoint.resize(static_cast<Eigen::Index>(midpoints.size()), 3);
-  for (size_t i = 0; i < midpoints.size(); ++i)
-    segments.midpoint.row(static_cast<Eigen::Index>(i)) = midpoints[i].transpose();
+  segments.build();
   return segments;
-}
-
-/// The streamlines of a patch whose rails cross its paint, oriented. A streamline with an
-/// end at another patch's strand end (`other_ends`, within `near_m`) is oriented by
-/// continuation, as rails are (decide_by_continuation_once()). Otherwise, where the patch's
-/// decided rails say which way the hair runs near a streamline (the mean cosine between
-/// its segments and the nearest rail segments, within `near_m`, is at least 0.3 either
-/// way), the streamline follows them, so that what decided the rails (continuation into a
-/// band, vertex order) decides it too; otherwise it is oriented on its own (head distance,
-/// alpha fade, height: decide_orientation() without conventions). The group's decision is
-/// `rails_decision` when most streamlines followed the rails, else their most common rule.
-/// Sum over the segments of `points` of the cosine with the nearest of `directions`
-/// (at `midpoints`) within `radius`; `judged` receives how many segments had one.
-double agreement_with(const Points3f& points, const PointIndex& index,
-                      const std::vector<Eigen::Vector3f>& directions, float radius, int& judged) {
-  double cosine_sum = 0;
-  judged = 0;
-  for (Eigen::Index i = 1; i < points.rows(); ++i) {
-    Eigen::Vector3f segment = points.row(i) - points.row(i - 1);
-    if (!(segment.norm() > 0)) continue;
-    Eigen::Vector3f midpoint = 0.5f * (points.row(i) + points.row(i - 1)).transpose();
-    for (int32_t id : index.within(midpoint, radius)) {
-      cosine_sum += segment.normalized().dot(directions[static_cast<size_t>(id)]);
-      ++judged;
-      break;  // the nearest
-    }
-  }
-  return cosine_sum;
 }
 
 /// The direction streamline `points` gets from its own ends and shape: head distance,
@@ -619,8 +632,19 @@ OrientationDecision own_orientation(const PaintedStreamline& line,
   return *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
 }
 
+/// The streamlines of a patch whose rails cross its paint, oriented, in this order:
+///  0. where the patch's rails were decided by a confident rule (vertex order, head
+///     distance, continuation, parting), a streamline runs the way its nearest rail
+///     segments do (mean cosine at least 0.3, within `near_m`);
+///  1. continuation at its ends: other patches' strand ends there (`other_ends`, as for
+///     rails, decide_by_continuation_once()), kept only where neighbouring votes agree;
+///  2. spread through the patch: a streamline runs the way its decided neighbours do;
+///  3. the patch's rails decided by weaker rules;
+///  4. its own ends (head distance, alpha fade, height: own_orientation()).
+/// The group's decision is continuation, the rails' decision or the most common own rule,
+/// whichever oriented most streamlines.
 PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int32_t patch,
-                                      const StrandEndIndex& other_ends, const RailSegments& rails,
+                                      const StrandEndIndex& other_ends, const SegmentIndex& rails,
                                       const OrientationDecision& rails_decision, double near_m,
                                       const TriangleMeshDistance& head_distance,
                                       const OrientationThresholds& thresholds) {
@@ -634,13 +658,11 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
   // The patch's own decided rails, where they say which way the hair runs near a
   // streamline.
   auto follow_rails = [&] {
-    if (rails.midpoint.rows() == 0) return;
-    const PointIndex rail_index(rails.midpoint);
+    if (rails.empty()) return;
     for (size_t i = 0; i < count; ++i) {
       if (sense[i] != 0) continue;
       int judged = 0;
-      const double cosine_sum =
-          agreement_with(lines[i].points, rail_index, rails.direction, radius, judged);
+      const double cosine_sum = rails.agreement(lines[i].points, radius, judged);
       if (judged >= 2 && std::abs(cosine_sum) >= min_mean_cosine * judged) {
         sense[i] = cosine_sum > 0 ? 1 : -1;
         by_rails[i] = true;
@@ -681,38 +703,14 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
     std::vector<size_t> voters;
     for (size_t i = 0; i < count; ++i)
       if (sense[i] != 0 && !by_rails[i]) voters.push_back(i);
-    std::vector<Eigen::Vector3f> directions, midpoints;
-    std::vector<size_t> owner;
-    for (size_t i : voters) {
-      const Points3f& points = lines[i].points;
-      for (Eigen::Index k = 1; k < points.rows(); ++k) {
-        Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
-        if (!(segment.norm() > 0)) continue;
-        directions.push_back(static_cast<float>(sense[i]) * segment.normalized());
-        midpoints.push_back(0.5f * (points.row(k) + points.row(k - 1)).transpose());
-        owner.push_back(i);
-      }
-    }
-    Points3f midpoint_rows(static_cast<Eigen::Index>(midpoints.size()), 3);
-    for (size_t k = 0; k < midpoints.size(); ++k)
-      midpoint_rows.row(static_cast<Eigen::Index>(k)) = midpoints[k].transpose();
-    const PointIndex index(midpoint_rows);
+    SegmentIndex votes;
+    for (size_t i : voters) votes.add(lines[i].points, sense[i], i);
+    votes.build();
     int with_neighbour = 0, agreeing = 0;
     for (size_t i : voters) {
-      const Points3f& points = lines[i].points;
-      double cosine_sum = 0;
       int judged = 0;
-      for (Eigen::Index k = 1; k < points.rows(); ++k) {
-        Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
-        if (!(segment.norm() > 0)) continue;
-        Eigen::Vector3f midpoint = 0.5f * (points.row(k) + points.row(k - 1)).transpose();
-        for (int32_t id : index.within(midpoint, 2 * radius)) {
-          if (owner[static_cast<size_t>(id)] == i) continue;
-          cosine_sum += static_cast<float>(sense[i]) * segment.normalized().dot(directions[static_cast<size_t>(id)]);
-          ++judged;
-          break;
-        }
-      }
+      const double cosine_sum =
+          sense[i] * votes.agreement(lines[i].points, 2 * radius, judged, i);
       if (judged < 2 || std::abs(cosine_sum) < min_mean_cosine * judged) continue;
       ++with_neighbour;
       agreeing += cosine_sum > 0 ? 1 : 0;
@@ -726,27 +724,16 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
   // 2. ...carried through the patch: a streamline runs the way its decided neighbours do
   // (the paint's flow is smooth), in rounds, so that it spreads across a cap.
   for (int round = 0; round < 32 && continued + followed_rails > 0; ++round) {
-    std::vector<Eigen::Vector3f> directions, midpoints;
-    for (size_t i = 0; i < count; ++i) {
-      if (sense[i] == 0) continue;
-      const Points3f& points = lines[i].points;
-      for (Eigen::Index k = 1; k < points.rows(); ++k) {
-        Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
-        if (!(segment.norm() > 0)) continue;
-        directions.push_back(static_cast<float>(sense[i]) * segment.normalized());
-        midpoints.push_back(0.5f * (points.row(k) + points.row(k - 1)).transpose());
-      }
-    }
-    Points3f midpoint_rows(static_cast<Eigen::Index>(midpoints.size()), 3);
-    for (size_t k = 0; k < midpoints.size(); ++k)
-      midpoint_rows.row(static_cast<Eigen::Index>(k)) = midpoints[k].transpose();
-    const PointIndex index(midpoint_rows);
+    SegmentIndex decided_segments;
+    for (size_t i = 0; i < count; ++i)
+      if (sense[i] != 0) decided_segments.add(lines[i].points, sense[i], i);
+    decided_segments.build();
     int decided = 0;
     std::vector<int> next = sense;
     for (size_t i = 0; i < count; ++i) {
       if (sense[i] != 0) continue;
       int judged = 0;
-      const double cosine_sum = agreement_with(lines[i].points, index, directions, 2 * radius, judged);
+      const double cosine_sum = decided_segments.agreement(lines[i].points, 2 * radius, judged);
       if (judged >= 2 && std::abs(cosine_sum) >= min_mean_cosine * judged) {
         next[i] = cosine_sum > 0 ? 1 : -1;
         ++decided;

@@ -3,6 +3,8 @@
 // (hanging hair runs down; the ponytail's cap runs into the band where the tail starts).
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <map>
 
 #include "hair/extract/extract.h"
@@ -105,6 +107,22 @@ TEST(MakeHumanOrientation, PonytailCapRunsIntoTheBand) {
   EXPECT_GT(cap, 20);
   EXPECT_GE(static_cast<double>(into_band) / static_cast<double>(cap), 0.8)
       << into_band << " of " << cap;
+}
+
+TEST(MakeHumanPaint, TracedPatchesAreTheSameForAnyThreadCount) {
+  // short01 has its back traced along the paint in dozens of patches, in parallel.
+  if (!std::filesystem::exists(makehuman_dir())) GTEST_SKIP();
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  ExtractResult one = extract_model("short01");
+  omp_set_num_threads(std::max(2, threads));
+  ExtractResult many = extract_model("short01");
+  omp_set_num_threads(threads);
+  EXPECT_GT(one.stats.patches_traced_along_paint, 10);
+  EXPECT_EQ(one.stats.patches_traced_along_paint, many.stats.patches_traced_along_paint);
+  EXPECT_EQ(one.strands.offsets, many.strands.offsets);
+  EXPECT_EQ(one.strands.points, many.strands.points);
+  EXPECT_EQ(one.group_rule, many.group_rule);
 }
 
 }  // namespace

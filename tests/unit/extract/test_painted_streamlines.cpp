@@ -3,46 +3,19 @@
 // covering the patch; they stop at the border and where the paint is not clear.
 #include <gtest/gtest.h>
 
-#include <numeric>
-
 #include "hair/extract/painted_streamlines.h"
+#include "unit/painted_grid.h"
 
 namespace hair {
 namespace {
 
-PolyMesh grid(int columns, int rows, float size) {
-  PolyMesh mesh;
-  mesh.vertices.resize((columns + 1) * (rows + 1), 3);
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i <= columns; ++i)
-      mesh.vertices.row(j * (columns + 1) + i) << size * i, size * j, 0.0f;
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) {
-      const int32_t a = j * (columns + 1) + i;
-      const int32_t corners[4] = {a, a + 1, a + columns + 2, a + columns + 1};
-      mesh.append_face(corners);
-    }
-  return mesh;
-}
-
-PaintedFlow uniform_flow(const PolyMesh& mesh, const Eigen::Vector3f& direction, float fall) {
-  PaintedFlow flow;
-  const auto faces = static_cast<size_t>(mesh.face_count());
-  flow.direction.assign(faces, direction.normalized());
-  flow.coherence.assign(faces, 0.9f);
-  flow.alpha_fall.assign(faces, fall);
-  return flow;
-}
-
-std::vector<int64_t> all_faces(const PolyMesh& mesh) {
-  std::vector<int64_t> faces(static_cast<size_t>(mesh.face_count()));
-  std::iota(faces.begin(), faces.end(), 0);
-  return faces;
-}
+using test::all_faces;
+using test::flat_grid;
+using test::uniform_flow;
 
 TEST(PaintedStreamlines, ADiagonalFlowGivesStraightEvenlySpacedLinesAlongIt) {
   const float cell = 0.01f;
-  PolyMesh mesh = grid(10, 10, cell);  // 10 cm square
+  PolyMesh mesh = flat_grid(10, 10, 10 * cell, 10 * cell);  // 10 cm square
   const Eigen::Vector3f diagonal = Eigen::Vector3f(1, 1, 0).normalized();
   PaintedFlow flow = uniform_flow(mesh, diagonal, 0.0f);
   StreamlineParams params;
@@ -86,7 +59,7 @@ TEST(PaintedStreamlines, ADiagonalFlowGivesStraightEvenlySpacedLinesAlongIt) {
 
 TEST(PaintedStreamlines, TheyStopWhereThePaintIsNotClearAndCarryTheFade) {
   const float cell = 0.01f;
-  PolyMesh mesh = grid(4, 10, cell);  // 4 cm wide, 10 cm tall
+  PolyMesh mesh = flat_grid(4, 10, 4 * cell, 10 * cell);  // 4 cm wide, 10 cm tall
   PaintedFlow flow = uniform_flow(mesh, Eigen::Vector3f(0, -1, 0), 0.3f);  // tips down
   // The upper half has no clear paint.
   for (int64_t f = 0; f < mesh.face_count(); ++f)

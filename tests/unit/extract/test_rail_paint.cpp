@@ -3,45 +3,16 @@
 // the flow is found whichever is longer, and the fade's sign follows the rails' order.
 #include <gtest/gtest.h>
 
-#include <numeric>
-
 #include "hair/extract/rail_paint.h"
 #include "hair/mesh/patch_rails.h"
+#include "unit/painted_grid.h"
 
 namespace hair {
 namespace {
 
-/// A flat grid of `columns` x `rows` quads in the x-y plane, `width` by `height` metres.
-PolyMesh grid(int columns, int rows, float width, float height) {
-  PolyMesh mesh;
-  mesh.vertices.resize((columns + 1) * (rows + 1), 3);
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i <= columns; ++i)
-      mesh.vertices.row(j * (columns + 1) + i) << width * i / columns, height * j / rows, 0.0f;
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) {
-      const int32_t a = j * (columns + 1) + i;
-      const int32_t corners[4] = {a, a + 1, a + columns + 2, a + columns + 1};
-      mesh.append_face(corners);
-    }
-  return mesh;
-}
-
-/// Every face's flow along `direction`, clear, with the alpha falling by `fall` along it.
-PaintedFlow uniform_flow(const PolyMesh& mesh, const Eigen::Vector3f& direction, float fall) {
-  PaintedFlow flow;
-  const auto faces = static_cast<size_t>(mesh.face_count());
-  flow.direction.assign(faces, direction.normalized());
-  flow.coherence.assign(faces, 0.9f);
-  flow.alpha_fall.assign(faces, fall);
-  return flow;
-}
-
-std::vector<int64_t> all_faces(const PolyMesh& mesh) {
-  std::vector<int64_t> faces(static_cast<size_t>(mesh.face_count()));
-  std::iota(faces.begin(), faces.end(), 0);
-  return faces;
-}
+using test::all_faces;
+using test::flat_grid;
+using test::uniform_flow;
 
 /// The family whose chains run along y (the grid's columns).
 int family_along_y(const PolyMesh& mesh, const QuadRegion& region) {
@@ -53,7 +24,7 @@ int family_along_y(const PolyMesh& mesh, const QuadRegion& region) {
 TEST(RailPaint, TheFamilyAlongThePaintIsFoundWhereTheOtherIsLonger) {
   // A wide grid: the rows (along x) are the longer chains, the paint runs down y, as on
   // a cap whose rings are longer than its strands.
-  PolyMesh mesh = grid(12, 4, 0.12f, 0.04f);
+  PolyMesh mesh = flat_grid(12, 4, 0.12f, 0.04f);
   std::vector<int64_t> faces = all_faces(mesh);
   std::vector<PatchTopology> topologies{patch_topology(mesh, faces)};
   ASSERT_EQ(topologies[0].regions.size(), 1u);
@@ -82,7 +53,7 @@ TEST(RailPaint, TheFamilyAlongThePaintIsFoundWhereTheOtherIsLonger) {
 }
 
 TEST(RailPaint, TheAlphaFadeVotesForTheRailsRunningTowardsTheTips) {
-  PolyMesh mesh = grid(2, 6, 0.02f, 0.06f);
+  PolyMesh mesh = flat_grid(2, 6, 0.02f, 0.06f);
   EdgeFaces edge_faces(mesh);
   // A rail down the middle column, from the top (y = 0.06) to the bottom.
   std::vector<int32_t> down;
