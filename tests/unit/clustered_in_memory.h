@@ -1,7 +1,9 @@
 #pragma once
 
 // Extract, typeify and both clusterings of a hair mesh in memory with the default
-// parameters, as the stages chain them: the start of the synthetic-truth tests.
+// parameters, as the stages chain them: the start of the synthetic-truth tests. A mesh
+// with materials (painted synthetic presets) has its embedded textures read, as the
+// extract stage reads a mesh's textures.
 
 #include <string>
 
@@ -23,7 +25,9 @@ struct ClusteredInMemory {
 inline ClusteredInMemory cluster_in_memory(const PolyMesh& mesh, const PolyMesh& body,
                                            const std::string& name) {
   ClusteredInMemory run;
-  run.extract = extract_strands(mesh, body, ExtractParams{}, name, "body");
+  const ExtractParams params;
+  run.extract = extract_strands(mesh, body, params, name, "body",
+                                load_painted_textures(mesh.materials, params.painted_flow, name));
   run.head_height_m = run.extract.head.head_height;
   const double h = run.head_height_m;
   run.types = group_types(run.extract.strands, run.extract.group_first_strand, h, TypeifyParams{});

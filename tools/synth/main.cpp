@@ -46,12 +46,22 @@ void write_text_atomically(const fs::path& path, const std::string& text) {
   output.commit();
 }
 
-/// Writes DIR/<name>.obj and DIR/<name>.truth.h5.
+/// Writes DIR/<name>.obj and DIR/<name>.truth.h5; for a painted model also DIR/<name>.mtl
+/// and DIR/textures/<name>.png, as artists ship hair meshes.
 void write_model(const SynthModel& model, const std::string& name, const fs::path& directory,
                  const Common& common, double wall_time_s) {
   fs::path obj_path = directory / (name + ".obj");
   fs::path truth_path = directory / (name + ".truth.h5");
-  write_text_atomically(obj_path, hair::synth::obj_text(model, common.unit_scale));
+  std::string mtl_name;
+  if (model.mesh.has_materials()) {
+    const std::string image_name = "textures/" + name + ".png";
+    fs::create_directories(directory / "textures");
+    const std::vector<uint8_t>& png = model.mesh.materials.front().diffuse.encoded;
+    write_text_atomically(directory / image_name, std::string(png.begin(), png.end()));
+    mtl_name = name + ".mtl";
+    write_text_atomically(directory / mtl_name, hair::synth::mtl_text(model, image_name));
+  }
+  write_text_atomically(obj_path, hair::synth::obj_text(model, common.unit_scale, mtl_name));
   hair::AtomicFile output(truth_path);
   auto file = hair::h5::File::create(output.temporary_path(), truth_path.string());
   hair::synth::write_truth_file(file, model, common.unit_scale, obj_path.filename().string());
@@ -188,6 +198,8 @@ int main(int argc, char** argv) {
   try {
     if (list_presets) {
       for (const std::string& p : hair::synth::preset_names()) std::cout << p << "\n";
+      for (const std::string& p : hair::synth::painted_preset_names())
+        std::cout << p << " (painted; not in the corpus)\n";
       return 0;
     }
     if (*corpus) {

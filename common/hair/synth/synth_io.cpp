@@ -41,7 +41,7 @@ const char* kind_name(ComponentSpec::Kind kind) {
 
 }  // namespace
 
-std::string obj_text(const SynthModel& model, double unit_scale) {
+std::string obj_text(const SynthModel& model, double unit_scale, const std::string& mtl_file_name) {
   const PolyMesh& mesh = model.mesh;
   std::string text = fmt::format(
       "# hair-synth: preset {}, seed {}; {} patches, {} vertices, {} faces; units: {} m\n"
@@ -49,6 +49,8 @@ std::string obj_text(const SynthModel& model, double unit_scale) {
       model.name, model.seed, model.patches.size(), mesh.vertex_count(), mesh.face_count(),
       unit_scale);
   text.reserve(static_cast<size_t>(mesh.vertex_count()) * 40 + mesh.face_vertices.size() * 40);
+  const bool textured = mesh.has_materials() && !mtl_file_name.empty();
+  if (textured) text += fmt::format("mtllib {}\n", mtl_file_name);
   for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
     text += fmt::format("v {:.6f} {:.6f} {:.6f}\n", mesh.vertices(v, 0) / unit_scale,
                         mesh.vertices(v, 1) / unit_scale, mesh.vertices(v, 2) / unit_scale);
@@ -57,6 +59,7 @@ std::string obj_text(const SynthModel& model, double unit_scale) {
   for (size_t p = 0; p < model.patches.size(); ++p) {
     const SynthPatch& patch = model.patches[p];
     text += fmt::format("g patch{}\n", p);
+    if (textured) text += fmt::format("usemtl {}\n", mesh.materials.front().name);
     for (int64_t f = patch.first_face; f < patch.first_face + patch.face_count; ++f) {
       text += "f";
       for (int64_t corner = mesh.face_offsets[static_cast<size_t>(f)];
@@ -66,6 +69,15 @@ std::string obj_text(const SynthModel& model, double unit_scale) {
       text += "\n";
     }
   }
+  return text;
+}
+
+std::string mtl_text(const SynthModel& model, const std::string& image_file_name) {
+  std::string text = fmt::format("# hair-synth: preset {}, seed {}: the painted hair\n",
+                                 model.name, model.seed);
+  for (const MeshMaterial& material : model.mesh.materials)
+    text += fmt::format("newmtl {}\nKd 1 1 1\nmap_Kd {}\nmap_d {}\n", material.name,
+                        image_file_name, image_file_name);
   return text;
 }
 
@@ -92,6 +104,7 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["braid_depth_m"] = c.braid_depth_m;
     item["braid_period_m"] = c.braid_period_m;
     item["band_gap_m"] = c.band_gap_m;
+    item["one_piece_rings"] = c.one_piece_rings;
     json["components"].push_back(item);
   }
   const DefectSpec& d = spec.defects;
@@ -109,7 +122,8 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
                      {"reversed_share", d.reversed_share},
                      {"shuffled_share", d.shuffled_share},
                      {"scalp_lift_m", d.scalp_lift_m},
-                     {"body_clearance_m", d.body_clearance_m}};
+                     {"body_clearance_m", d.body_clearance_m},
+                     {"painted_texture", d.painted_texture}};
   return json;
 }
 
@@ -121,11 +135,13 @@ void read_key(const nlohmann::json& json, const std::string& where, const char* 
   auto found = json.find(key);
   if (found == json.end()) return;
   bool ok = std::is_same_v<T, std::string> ? found->is_string()
+            : std::is_same_v<T, bool>      ? found->is_boolean()
             : std::is_integral_v<T>        ? found->is_number_integer()
                                            : found->is_number();
   if (!ok)
     throw Error::usage(where + key + ": expected a " +
                        (std::is_same_v<T, std::string> ? "string"
+                        : std::is_same_v<T, bool>      ? "true or false"
                         : std::is_integral_v<T>        ? "whole number"
                                                        : "number") +
                        ", found " + found->dump());
@@ -162,7 +178,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
           {"kind", "stream_count", "length_min_m", "length_max_m", "wave_amplitude_m",
            "wavelength_m", "strip_width_m", "azimuth_min_deg", "azimuth_max_deg", "polar_min_deg",
            "polar_max_deg", "band_azimuth_deg", "band_polar_deg", "braid_width_m", "braid_depth_m",
-           "braid_period_m", "band_gap_m"});
+           "braid_period_m", "band_gap_m", "one_piece_rings"});
       ComponentSpec c;
       std::string kind = "normal";
       read_key(item, where, "kind", kind);
@@ -195,6 +211,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
       read_key(item, where, "braid_depth_m", c.braid_depth_m);
       read_key(item, where, "braid_period_m", c.braid_period_m);
       read_key(item, where, "band_gap_m", c.band_gap_m);
+      read_key(item, where, "one_piece_rings", c.one_piece_rings);
       spec.components.push_back(c);
     }
   }
@@ -205,7 +222,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
                        {"rails_min", "rails_max", "cap_rails", "segment_length_m",
                         "normal_pieces_max", "braid_piece_length_m", "gap_m", "overlap_share",
                         "overlap_m", "jitter_m", "triangulate_share", "reversed_share",
-                        "shuffled_share", "scalp_lift_m", "body_clearance_m"});
+                        "shuffled_share", "scalp_lift_m", "body_clearance_m", "painted_texture"});
     DefectSpec& d = spec.defects;
     read_key(item, where, "rails_min", d.rails_min);
     read_key(item, where, "rails_max", d.rails_max);
@@ -222,6 +239,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
     read_key(item, where, "shuffled_share", d.shuffled_share);
     read_key(item, where, "scalp_lift_m", d.scalp_lift_m);
     read_key(item, where, "body_clearance_m", d.body_clearance_m);
+    read_key(item, where, "painted_texture", d.painted_texture);
   }
   check_spec(spec);
   return spec;

@@ -14,8 +14,14 @@ namespace hair::synth {
 inline constexpr const char* kSynthTruthSchema = "hairstyle.synth_truth";
 
 /// The mesh as OBJ text: `v` in source units (metres / unit_scale) in the mesh's vertex
-/// order, one `vt` per face corner, `f v/vt`; a `g` line before each patch.
-std::string obj_text(const SynthModel& model, double unit_scale);
+/// order, one `vt` per face corner, `f v/vt`; a `g` line before each patch. A painted
+/// mesh (DefectSpec::painted_texture) names `mtl_file_name` (mtllib) and its material
+/// (usemtl) when that is given; see mtl_text().
+std::string obj_text(const SynthModel& model, double unit_scale,
+                     const std::string& mtl_file_name = "");
+
+/// The MTL of a painted mesh: its material with `map_Kd` (and `map_d`) `image_file_name`.
+std::string mtl_text(const SynthModel& model, const std::string& image_file_name);
 
 /// The specification as JSON (the truth file's `parameters` attribute and the manifest).
 nlohmann::ordered_json spec_json(const HairStyleSpec& spec);

@@ -11,6 +11,7 @@
 #include "hair/core/error.h"
 #include "hair/geom/triangle_mesh_distance.h"
 #include "hair/mesh/body_measures.h"
+#include "hair/synth/synth_paint.h"
 
 namespace hair::synth {
 
@@ -711,6 +712,64 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
   return patch;
 }
 
+/// One patch for the streams `stream_ids` of a short cap meshed in rings (a wig cap):
+/// vertex (k, r) on stream k at arc length r * segment_length_m, quads between
+/// neighbouring streams (the last joined to the first) for rows both reach. Texture u runs
+/// around, v from the whorl (0) to the longest stream's end (1), as on the other patches.
+SynthPatch build_ring_patch(const std::vector<Stream>& streams,
+                            const std::vector<int32_t>& stream_ids, const DefectSpec& defects,
+                            const Head& head, Rng& rng, std::vector<float>& positions,
+                            PolyMesh& mesh, std::vector<float>& uv,
+                            std::vector<float>& vertex_along_m) {
+  SynthPatch patch;
+  patch.stream = stream_ids.front();
+  patch.style = HairStyle::short_hair;
+  patch.type = GroupType::root_free;
+  patch.rails = static_cast<int32_t>(stream_ids.size());
+  const auto count = static_cast<int>(stream_ids.size());
+  double longest = 0;
+  for (int32_t id : stream_ids) longest = std::max(longest, streams[static_cast<size_t>(id)].length_m());
+  const int rows = static_cast<int>(std::floor(longest / defects.segment_length_m)) + 1;
+  patch.end_m = longest;
+  auto base = static_cast<int32_t>(vertex_along_m.size());
+  patch.first_vertex = base;
+  patch.first_face = mesh.face_count();
+  // Vertex ids, natural order: stream by stream, root outwards; -1 beyond a stream's end.
+  std::vector<std::vector<int32_t>> id(static_cast<size_t>(count));
+  int32_t next = base;
+  for (int k = 0; k < count; ++k) {
+    const Stream& stream = streams[static_cast<size_t>(stream_ids[static_cast<size_t>(k)])];
+    for (int r = 0; r < rows; ++r) {
+      const double s = r * defects.segment_length_m;
+      if (s > stream.length_m()) break;
+      Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      Vec3 p = on_scalp(head, stream.point_at(s), stream.scalp_lift_at(s)) + defects.jitter_m * jitter;
+      for (int c = 0; c < 3; ++c) positions.push_back(static_cast<float>(p[c]));
+      vertex_along_m.push_back(static_cast<float>(s));
+      id[static_cast<size_t>(k)].push_back(next++);
+    }
+  }
+  patch.vertex_count = next - base;
+  auto corner = [&](int k, int r, double u) {
+    uv.push_back(static_cast<float>(u));
+    uv.push_back(static_cast<float>(r * defects.segment_length_m / longest));
+    return id[static_cast<size_t>(k % count)][static_cast<size_t>(r)];
+  };
+  auto reaches = [&](int k, int r) {
+    return r < static_cast<int>(id[static_cast<size_t>(k % count)].size());
+  };
+  for (int k = 0; k < count; ++k)
+    for (int r = 0; r + 1 < rows; ++r) {
+      if (!reaches(k, r + 1) || !reaches(k + 1, r + 1)) continue;
+      const double u0 = static_cast<double>(k) / count, u1 = static_cast<double>(k + 1) / count;
+      std::vector<int32_t> quad{corner(k, r, u0), corner(k + 1, r, u1), corner(k + 1, r + 1, u1),
+                                corner(k, r + 1, u0)};
+      mesh.append_face(quad);
+    }
+  patch.face_count = mesh.face_count() - patch.first_face;
+  return patch;
+}
+
 /// Style of the hair at arc length `along_m` of a stream: that of the last piece starting
 /// at or before it (hidden gaps take the style of the piece before them).
 HairStyle style_at(const Stream& stream, double along_m) {
@@ -750,6 +809,11 @@ void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head,
 }
 
 }  // namespace
+
+const std::vector<std::string>& painted_preset_names() {
+  static const std::vector<std::string> names = {"ring_cap"};
+  return names;
+}
 
 const std::vector<std::string>& preset_names() {
   static const std::vector<std::string> names = {
@@ -867,9 +931,27 @@ HairStyleSpec preset(const std::string& name) {
     normal.length_min_m = 0.18;
     normal.length_max_m = 0.26;
     spec.components = {tail, normal};
+  } else if (name == "ring_cap") {
+    // A one-piece wig cap, as short03: quads in rings around the crown whorl, its texture
+    // unwrapped so that the painted strokes run from the whorl to the hairline.
+    ComponentSpec cap;
+    cap.kind = Kind::short_cap;
+    cap.one_piece_rings = true;
+    cap.stream_count = 28;
+    cap.length_min_m = 0.16;
+    cap.length_max_m = 0.24;
+    cap.strip_width_m = 0.02;
+    cap.band_azimuth_deg = 180;
+    cap.band_polar_deg = 20;
+    cap.polar_min_deg = 8;
+    cap.polar_max_deg = 8;
+    spec.defects.scalp_lift_m = 0.003;
+    spec.defects.painted_texture = true;
+    spec.components = {cap};
   } else {
     std::string known;
     for (const std::string& n : preset_names()) known += (known.empty() ? "" : ", ") + n;
+    for (const std::string& n : painted_preset_names()) known += ", " + n;
     throw Error::usage("unknown preset '" + name + "'; presets: " + known);
   }
   return spec;
@@ -960,10 +1042,13 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
   std::vector<float> uv, positions;
   std::vector<Points3f> centres, strand_polylines;
   std::vector<int32_t> strand_stream;
+  std::vector<std::vector<int32_t>> ring_streams(spec.components.size());
   for (size_t s = 0; s < streams.size(); ++s) {
     const Stream& stream = streams[s];
     auto stream_id = static_cast<int32_t>(s);
-    int pieces = static_cast<int>(stream.pieces.size());
+    const bool in_rings = spec.components[static_cast<size_t>(stream.component)].one_piece_rings;
+    if (in_rings) ring_streams[static_cast<size_t>(stream.component)].push_back(stream_id);
+    int pieces = in_rings ? 0 : static_cast<int>(stream.pieces.size());
     for (int k = 0; k < pieces; ++k) {
       SynthPatch patch = build_patch(stream, stream.pieces[static_cast<size_t>(k)], spec.defects,
                                      head, rng, positions, model.mesh, uv, model.vertex_along_m);
@@ -986,10 +1071,18 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     add_true_strands(stream, stream_id, head, strands_per_stream, strand_rng, strand_polylines,
                      strand_stream, model.strand_point_style);
   }
+  for (const std::vector<int32_t>& ids : ring_streams)
+    if (!ids.empty())
+      model.patches.push_back(build_ring_patch(streams, ids, spec.defects, head, rng, positions,
+                                               model.mesh, uv, model.vertex_along_m));
   model.mesh.vertices = Eigen::Map<const Points3f>(
       positions.data(), static_cast<Eigen::Index>(positions.size() / 3), 3);
   model.mesh.corner_uv =
       Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
+  if (spec.defects.painted_texture) {
+    model.mesh.materials = {painted_hair_material(seed)};
+    model.mesh.face_material.assign(static_cast<size_t>(model.mesh.face_count()), 0);
+  }
   model.stream_centres = strand_set_from_polylines(centres);
   model.strands = strand_set_from_polylines(strand_polylines);
   model.strands.strand_attributes["stream"] = strand_stream;

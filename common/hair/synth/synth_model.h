@@ -65,6 +65,10 @@ struct ComponentSpec {
   double braid_period_m = 0.07;
   /// Hidden length left out where a cap meets its tail (ponytail) or braid.
   double band_gap_m = 0.01;
+  /// Short cap: meshed as one piece whose quads run in rings around the whorl (a wig cap),
+  /// the rings' chains longer than the hair's, instead of one grid per stream. Its roots
+  /// all lie polar_min_deg from the whorl.
+  bool one_piece_rings = false;
 };
 
 /// How patches are cut from streams and how much they are spoiled; every defect has a
@@ -93,6 +97,9 @@ struct DefectSpec {
   /// the crown, rising to 1.5 times this at the hairline).
   double scalp_lift_m = 0.004;
   double body_clearance_m = 0.008;  ///< hair kept this far off the body
+  /// The mesh carries a painted texture as artists' meshes do (synth_paint.h): strokes
+  /// along v, which runs root to tip on every patch, and an alpha fading towards the tips.
+  bool painted_texture = false;
 };
 
 /// A hairstyle: its components and defects (a preset, or a preset varied by a seed).
@@ -102,8 +109,13 @@ struct HairStyleSpec {
   DefectSpec defects;
 };
 
-/// Names of the presets, in gallery order.
+/// Names of the presets, in gallery order (the training corpus cycles through these).
 const std::vector<std::string>& preset_names();
+
+/// Presets of real meshes' kinds with painted textures (the real-meshes issue), not yet in
+/// the training corpus: "ring_cap" (a one-piece wig cap meshed in rings around the whorl,
+/// painted down from it).
+const std::vector<std::string>& painted_preset_names();
 
 /// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.
 HairStyleSpec preset(const std::string& name);
