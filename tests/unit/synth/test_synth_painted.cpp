@@ -11,6 +11,7 @@
 #include "hair/extract/extract.h"
 #include "hair/geom/point_index.h"
 #include "hair/mesh/mesh_io.h"
+#include "hair/synth/synth_eval.h"
 #include "hair/synth/synth_io.h"
 #include "hair/synth/synth_model.h"
 #include "hair/synth/synth_paint.h"
@@ -119,6 +120,55 @@ TEST(SynthPainted, TheTextureFadesTowardsTheTipsAndIsWrittenBesideTheMesh) {
   HairStyleSpec again = spec_from_json(spec_json(model.spec));
   EXPECT_TRUE(again.components.front().one_piece_rings);
   EXPECT_TRUE(again.defects.painted_texture);
+}
+
+/// Share of a model's groups that extract orients root to tip (groups spanning patches
+/// left out), with its painted texture read or not.
+double groups_right_way(const SynthModel& model, const PolyMesh& body, bool textured) {
+  ExtractParams params;
+  PaintedTextures textures =
+      textured ? load_painted_textures(model.mesh.materials, params.painted_flow, model.name)
+               : PaintedTextures{};
+  ExtractResult extract = extract_strands(model.mesh, body, params, model.name, "body", textures);
+  std::vector<int32_t> patch_of = group_patches(model, extract);
+  std::vector<GroupOrientation> orientation = group_orientations(model, extract, patch_of);
+  int64_t judged = 0, right = 0;
+  for (size_t g = 0; g < orientation.size(); ++g) {
+    if (patch_of[g] < 0) continue;
+    ++judged;
+    right += orientation[g] == GroupOrientation::root_to_tip ? 1 : 0;
+  }
+  return judged ? static_cast<double>(right) / static_cast<double>(judged) : 0.0;
+}
+
+TEST(SynthPainted, EveryPresetPaintedIsOrientedAtLeastAsWellAsWithoutPaint) {
+  // The paint must not spoil what the mesh's shape already told: each corpus preset with a
+  // painted texture (strokes along its true hair, alpha fading to its true tips, whatever
+  // its vertex order), read with the texture and without it. Both read 91.6% of the groups
+  // root to tip: the fade comes after continuation and decides almost nothing here. Tried
+  // first of all rules it reads 99.8%, but turns ponytail01's cap away from its band (its
+  // cards reuse a texture that fades towards the hairline); see docs/extract.md.
+  const PolyMesh body = sample_body_m();
+  double with_sum = 0, without_sum = 0;
+  int models = 0;
+  for (const std::string& name : preset_names())
+    for (uint32_t seed : {1u, 2u}) {
+      SCOPED_TRACE(name + ", seed " + std::to_string(seed));
+      HairStyleSpec spec = varied_spec(preset(name), seed);
+      spec.defects.painted_texture = true;
+      SynthModel model = generate_model(spec, body, seed, 2);
+      const double with = groups_right_way(model, body, true);
+      const double without = groups_right_way(model, body, false);
+      std::printf("[ painted  ] %-16s seed %u: groups root to tip %.1f%% painted, %.1f%% plain\n",
+                  name.c_str(), seed, 100 * with, 100 * without);
+      with_sum += with;
+      without_sum += without;
+      ++models;
+      EXPECT_GE(with, without - 0.05);
+    }
+  std::printf("[ painted  ] mean over %d models: %.1f%% painted, %.1f%% plain\n", models,
+              100 * with_sum / models, 100 * without_sum / models);
+  EXPECT_GE(with_sum, without_sum);
 }
 
 }  // namespace
