@@ -811,7 +811,7 @@ void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head,
 }  // namespace
 
 const std::vector<std::string>& painted_preset_names() {
-  static const std::vector<std::string> names = {"ring_cap"};
+  static const std::vector<std::string> names = {"ring_cap", "cap_over_layer", "mohawk"};
   return names;
 }
 
@@ -948,6 +948,45 @@ HairStyleSpec preset(const std::string& name) {
     spec.defects.scalp_lift_m = 0.003;
     spec.defects.painted_texture = true;
     spec.components = {cap};
+  } else if (name == "cap_over_layer") {
+    // A one-piece cap in rings over the top of the head, and under its back edge a longer
+    // layer of strips hanging to the shoulders (a layered cut whose back layer a cap hides).
+    ComponentSpec cap = preset("ring_cap").components.front();
+    cap.length_min_m = 0.12;
+    cap.length_max_m = 0.16;
+    ComponentSpec left = normal, right = normal;
+    left.azimuth_min_deg = 110;
+    left.azimuth_max_deg = 180;
+    right.azimuth_min_deg = -180;
+    right.azimuth_max_deg = -110;
+    for (ComponentSpec* layer : {&left, &right}) {
+      layer->polar_min_deg = 75;
+      layer->stream_count = 12;
+      layer->length_min_m = 0.20;
+      layer->length_max_m = 0.28;
+    }
+    spec.defects.scalp_lift_m = 0.003;
+    spec.defects.painted_texture = true;
+    spec.components = {cap, left, right};
+  } else if (name == "mohawk") {
+    // Spike cards standing up along the middle of the head, front to back, the sides bare.
+    ComponentSpec front;
+    front.kind = Kind::short_cards;
+    front.stream_count = 10;
+    front.length_min_m = 0.05;
+    front.length_max_m = 0.09;
+    front.strip_width_m = 0.02;
+    front.azimuth_min_deg = -12;
+    front.azimuth_max_deg = 12;
+    ComponentSpec back_left = front, back_right = front;
+    back_left.azimuth_min_deg = 168;
+    back_left.azimuth_max_deg = 180;
+    back_right.azimuth_min_deg = -180;
+    back_right.azimuth_max_deg = -168;
+    back_left.stream_count = back_right.stream_count = 6;
+    spec.defects.rails_max = 3;
+    spec.defects.painted_texture = true;
+    spec.components = {front, back_left, back_right};
   } else {
     std::string known;
     for (const std::string& n : preset_names()) known += (known.empty() ? "" : ", ") + n;

@@ -79,7 +79,13 @@ AgainstTruth extract_against_truth(const SynthModel& model, const PolyMesh& body
   return against_truth(result.strands, model.strands);
 }
 
-TEST(SynthPainted, TheRingCapIsReadAlongItsPaintAndOnlyWithIt) {
+bool all_ring_cap(const SynthModel& model) {
+  for (const ComponentSpec& component : model.spec.components)
+    if (!component.one_piece_rings) return false;
+  return true;
+}
+
+TEST(SynthPainted, PaintedPresetsAreReadAlongTheirTruthAndTheRingCapOnlyWithItsPaint) {
   const PolyMesh body = sample_body_m();
   for (const std::string& name : painted_preset_names())
     for (uint32_t seed : {1u, 2u, 3u}) {
@@ -88,14 +94,17 @@ TEST(SynthPainted, TheRingCapIsReadAlongItsPaintAndOnlyWithIt) {
       ASSERT_TRUE(model.mesh.has_materials());
       AgainstTruth with = extract_against_truth(model, body, true);
       AgainstTruth without = extract_against_truth(model, body, false);
-      std::printf("[ painted  ] %s seed %u: along the truth %.1f%% (without the texture %.1f%%), "
-                  "right way %.1f%% of %lld strands\n",
+      std::printf("[ painted  ] %-14s seed %u: along the truth %5.1f%% (without the texture "
+                  "%5.1f%%), right way %5.1f%% of %lld strands\n",
                   name.c_str(), seed, 100 * with.along_share, 100 * without.along_share,
                   100 * with.right_way_share, static_cast<long long>(with.strands));
       EXPECT_GE(with.along_share, 0.9);
       EXPECT_GE(with.right_way_share, 0.95);
-      // Without its texture the cap is read in rings: the paint is what fixes it.
-      EXPECT_LT(without.along_share, 0.5);
+      // Without its texture a ring cap is read in rings: the paint is what fixes it (with a
+      // layer of strips beside it, cap_over_layer, the strips' segments outnumber the cap's).
+      if (all_ring_cap(model)) {
+        EXPECT_LT(without.along_share, 0.5);
+      }
     }
 }
 
