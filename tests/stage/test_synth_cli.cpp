@@ -79,9 +79,9 @@ TEST(HairSynthCli, CorpusWritesEveryModelAndAManifest) {
 TEST(HairSynthCli, UnknownPresetIsAUsageError) {
   TemporaryDirectory directory("synth_bad");
   CommandResult run = run_command(
-      kSynth, {"--preset", "mohawk", "--body", kBody.string(), "-o", directory.path().string()});
+      kSynth, {"--preset", "beehive", "--body", kBody.string(), "-o", directory.path().string()});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.err.find("unknown preset 'mohawk'"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("unknown preset 'beehive'"), std::string::npos) << run.err;
   EXPECT_TRUE(directory.entries().empty());
 }
 

@@ -197,7 +197,7 @@ TEST_P(SynthPreset, ExtractFindsEveryPatchOrientedAsTheTruthSays) {
 INSTANTIATE_TEST_SUITE_P(Presets, SynthPreset, ::testing::ValuesIn(preset_names()),
                          [](const auto& test_info) { return test_info.param; });
 
-TEST(SynthPresets, UnknownPresetIsAUsageError) { EXPECT_THROW(preset("mohawk"), hair::Error); }
+TEST(SynthPresets, UnknownPresetIsAUsageError) { EXPECT_THROW(preset("beehive"), hair::Error); }
 
 TEST(SynthPresets, CorpusCyclingThePresetsMeetsTheIssuesMinimums) {
   // What `hair-synth corpus --count 60` builds.
