@@ -811,7 +811,8 @@ void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head,
 }  // namespace
 
 const std::vector<std::string>& painted_preset_names() {
-  static const std::vector<std::string> names = {"ring_cap", "cap_over_layer", "mohawk"};
+  static const std::vector<std::string> names = {"ring_cap", "cap_over_layer", "mohawk",
+                                                 "low_tail", "face_locks"};
   return names;
 }
 
@@ -821,6 +822,111 @@ const std::vector<std::string>& preset_names() {
       "ponytail",      "braid",     "normal_braid",    "two_braids",  "half_up"};
   return names;
 }
+
+namespace {
+
+/// The painted presets (painted_preset_names()), of the kinds community meshes come in.
+HairStyleSpec painted_preset(const std::string& name) {
+  using Kind = ComponentSpec::Kind;
+  HairStyleSpec spec;
+  spec.name = name;
+  ComponentSpec normal;
+  normal.kind = Kind::normal;
+  if (name == "ring_cap") {
+    // A one-piece wig cap, as short03: quads in rings around the crown whorl, its texture
+    // unwrapped so that the painted strokes run from the whorl to the hairline.
+    ComponentSpec cap;
+    cap.kind = Kind::short_cap;
+    cap.one_piece_rings = true;
+    cap.stream_count = 28;
+    cap.length_min_m = 0.16;
+    cap.length_max_m = 0.24;
+    cap.strip_width_m = 0.02;
+    cap.band_azimuth_deg = 180;
+    cap.band_polar_deg = 20;
+    cap.polar_min_deg = 8;
+    cap.polar_max_deg = 8;
+    spec.defects.scalp_lift_m = 0.003;
+    spec.defects.painted_texture = true;
+    spec.components = {cap};
+  } else if (name == "cap_over_layer") {
+    // A one-piece cap in rings over the top of the head, and under its back edge a longer
+    // layer of strips hanging to the shoulders (a layered cut whose back layer a cap hides).
+    ComponentSpec cap = preset("ring_cap").components.front();
+    cap.length_min_m = 0.12;
+    cap.length_max_m = 0.16;
+    ComponentSpec left = normal, right = normal;
+    left.azimuth_min_deg = 110;
+    left.azimuth_max_deg = 180;
+    right.azimuth_min_deg = -180;
+    right.azimuth_max_deg = -110;
+    for (ComponentSpec* layer : {&left, &right}) {
+      layer->polar_min_deg = 75;
+      layer->stream_count = 12;
+      layer->length_min_m = 0.20;
+      layer->length_max_m = 0.28;
+    }
+    spec.defects.scalp_lift_m = 0.003;
+    spec.defects.painted_texture = true;
+    spec.components = {cap, left, right};
+  } else if (name == "mohawk") {
+    // Spike cards standing up along the middle of the head, front to back, the sides bare.
+    ComponentSpec front;
+    front.kind = Kind::short_cards;
+    front.stream_count = 10;
+    front.length_min_m = 0.05;
+    front.length_max_m = 0.09;
+    front.strip_width_m = 0.02;
+    front.azimuth_min_deg = -12;
+    front.azimuth_max_deg = 12;
+    ComponentSpec back_left = front, back_right = front;
+    back_left.azimuth_min_deg = 168;
+    back_left.azimuth_max_deg = 180;
+    back_right.azimuth_min_deg = -180;
+    back_right.azimuth_max_deg = -168;
+    back_left.stream_count = back_right.stream_count = 6;
+    spec.defects.rails_max = 3;
+    spec.defects.painted_texture = true;
+    spec.components = {front, back_left, back_right};
+  } else if (name == "low_tail") {
+    // Hair pulled back under a band low at the nape into a tail (the cap's grids run from
+    // the hairline back and down to the band).
+    ComponentSpec tail;
+    tail.kind = Kind::ponytail;
+    tail.stream_count = 12;
+    tail.band_polar_deg = 105;
+    tail.length_min_m = 0.22;
+    tail.length_max_m = 0.30;
+    tail.strip_width_m = 0.05;
+    spec.defects.painted_texture = true;
+    spec.components = {tail};
+  } else if (name == "face_locks") {
+    // Medium hair with two longer locks framing the face, from the temples down past the
+    // chin in front of the ears.
+    normal.length_min_m = 0.14;
+    normal.length_max_m = 0.20;
+    normal.stream_count = 35;
+    normal.azimuth_min_deg = -150;
+    normal.azimuth_max_deg = 150;
+    ComponentSpec left = normal, right = normal;
+    left.azimuth_min_deg = 40;
+    left.azimuth_max_deg = 70;
+    right.azimuth_min_deg = -70;
+    right.azimuth_max_deg = -40;
+    for (ComponentSpec* lock : {&left, &right}) {
+      lock->stream_count = 4;
+      lock->length_min_m = 0.26;
+      lock->length_max_m = 0.32;
+      lock->polar_min_deg = 60;
+    }
+    spec.defects.normal_pieces_max = 2;
+    spec.defects.painted_texture = true;
+    spec.components = {normal, left, right};
+  }
+  return spec;
+}
+
+}  // namespace
 
 HairStyleSpec preset(const std::string& name) {
   using Kind = ComponentSpec::Kind;
@@ -931,62 +1037,9 @@ HairStyleSpec preset(const std::string& name) {
     normal.length_min_m = 0.18;
     normal.length_max_m = 0.26;
     spec.components = {tail, normal};
-  } else if (name == "ring_cap") {
-    // A one-piece wig cap, as short03: quads in rings around the crown whorl, its texture
-    // unwrapped so that the painted strokes run from the whorl to the hairline.
-    ComponentSpec cap;
-    cap.kind = Kind::short_cap;
-    cap.one_piece_rings = true;
-    cap.stream_count = 28;
-    cap.length_min_m = 0.16;
-    cap.length_max_m = 0.24;
-    cap.strip_width_m = 0.02;
-    cap.band_azimuth_deg = 180;
-    cap.band_polar_deg = 20;
-    cap.polar_min_deg = 8;
-    cap.polar_max_deg = 8;
-    spec.defects.scalp_lift_m = 0.003;
-    spec.defects.painted_texture = true;
-    spec.components = {cap};
-  } else if (name == "cap_over_layer") {
-    // A one-piece cap in rings over the top of the head, and under its back edge a longer
-    // layer of strips hanging to the shoulders (a layered cut whose back layer a cap hides).
-    ComponentSpec cap = preset("ring_cap").components.front();
-    cap.length_min_m = 0.12;
-    cap.length_max_m = 0.16;
-    ComponentSpec left = normal, right = normal;
-    left.azimuth_min_deg = 110;
-    left.azimuth_max_deg = 180;
-    right.azimuth_min_deg = -180;
-    right.azimuth_max_deg = -110;
-    for (ComponentSpec* layer : {&left, &right}) {
-      layer->polar_min_deg = 75;
-      layer->stream_count = 12;
-      layer->length_min_m = 0.20;
-      layer->length_max_m = 0.28;
-    }
-    spec.defects.scalp_lift_m = 0.003;
-    spec.defects.painted_texture = true;
-    spec.components = {cap, left, right};
-  } else if (name == "mohawk") {
-    // Spike cards standing up along the middle of the head, front to back, the sides bare.
-    ComponentSpec front;
-    front.kind = Kind::short_cards;
-    front.stream_count = 10;
-    front.length_min_m = 0.05;
-    front.length_max_m = 0.09;
-    front.strip_width_m = 0.02;
-    front.azimuth_min_deg = -12;
-    front.azimuth_max_deg = 12;
-    ComponentSpec back_left = front, back_right = front;
-    back_left.azimuth_min_deg = 168;
-    back_left.azimuth_max_deg = 180;
-    back_right.azimuth_min_deg = -180;
-    back_right.azimuth_max_deg = -168;
-    back_left.stream_count = back_right.stream_count = 6;
-    spec.defects.rails_max = 3;
-    spec.defects.painted_texture = true;
-    spec.components = {front, back_left, back_right};
+  } else if (std::find(painted_preset_names().begin(), painted_preset_names().end(), name) !=
+             painted_preset_names().end()) {
+    return painted_preset(name);
   } else {
     std::string known;
     for (const std::string& n : preset_names()) known += (known.empty() ? "" : ", ") + n;

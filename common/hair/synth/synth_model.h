@@ -115,7 +115,9 @@ const std::vector<std::string>& preset_names();
 /// Presets of real meshes' kinds with painted textures (the real-meshes issue), not yet in
 /// the training corpus: "ring_cap" (a one-piece wig cap meshed in rings around the whorl,
 /// painted down from it), "cap_over_layer" (such a cap over a longer back layer of
-/// strips), "mohawk" (spike cards along the middle of the head).
+/// strips), "mohawk" (spike cards along the middle of the head), "low_tail" (hair pulled
+/// back under a band low at the nape into a tail), "face_locks" (medium hair with two
+/// longer locks framing the face).
 const std::vector<std::string>& painted_preset_names();
 
 /// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.
