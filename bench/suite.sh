@@ -9,13 +9,15 @@
 #   skips           bench/skips.sh             what each skip saves
 #   blender         bench/blender_peer.sh      Blender 3.4's hair dynamics, same guides
 #   clustering      bench/cluster_compare.sh   two levels against one, and scikit-learn
+#   corrupted       bench/corrupted_intermediates.sh  byte-flipped extract.h5 through every reader
+#   fuzz            bench/fuzz.sh              libFuzzer on every reader (its own clang build)
 #
 #   bench/suite.sh [PART...]          # all parts by default
 #
 # Builds build/ first (Release, when there is none). Needs: python3 with h5py, numpy, matplotlib and
-# scikit-learn, hdf5-tools, and blender for the Blender part (skipped with a note when
-# absent): apt-get install python3-h5py python3-numpy python3-matplotlib python3-sklearn
-# hdf5-tools blender. Environment: MAKEHUMAN (default ../shared/data/makehuman), OUT
+# scikit-learn, hdf5-tools, blender for the Blender part (skipped with a note when
+# absent) and clang for the fuzz part: apt-get install python3-h5py python3-numpy
+# python3-matplotlib python3-sklearn hdf5-tools blender clang. Environment: MAKEHUMAN (default ../shared/data/makehuman), OUT
 # (default docs/bench); each part's own variables pass through.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -26,7 +28,7 @@ out=${OUT:-docs/bench}
 export OUT=$out
 export PYTHON=${PYTHON:-/usr/bin/python3}  # bench/cluster_compare.sh: numpy, scipy, h5py, scikit-learn
 parts=("$@")
-((${#parts[@]})) || parts=(time_error stability pipeline skips blender clustering)
+((${#parts[@]})) || parts=(time_error stability pipeline skips blender clustering corrupted fuzz)
 
 # Build first (configured as Release where there is no build folder yet).
 [[ -f build/CMakeCache.txt ]] || cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
@@ -74,7 +76,9 @@ for name in "${parts[@]}"; do
     # take about 18 minutes): BLENDER_RUNS, BLENDER_FRAMES.
     blender) part blender blender_peer.md env RUNS="${BLENDER_RUNS:-1}" FRAMES="${BLENDER_FRAMES:-30}" bash bench/blender_peer.sh "$makehuman" ;;
     clustering) part clustering cluster_compare.md bash bench/cluster_compare.sh "$makehuman" ;;
-    *) echo "suite: unknown part $name (time_error stability pipeline skips blender clustering)" >&2; exit 2 ;;
+    corrupted) part corrupted - bash bench/corrupted_intermediates.sh ;;
+    fuzz) part fuzz - bash bench/fuzz.sh "${FUZZ_SECONDS:-150}" ;;
+    *) echo "suite: unknown part $name (time_error stability pipeline skips blender clustering corrupted fuzz)" >&2; exit 2 ;;
   esac
 done
 
@@ -99,6 +103,8 @@ done <"$out/seconds.tsv"
   row skips "what the skips save" skips.md
   row blender "Blender 3.4's hair dynamics on the same guides and head motion" blender_peer.md
   row clustering "two-level against one-level clustering, scikit-learn on our affinities" cluster_compare.md
+  row corrupted "byte-flipped extract.h5 through every program that reads it" corrupted.md
+  row fuzz "libFuzzer on the mesh, material, texture and HDF5 readers" fuzz.md
   echo
   echo "All parts: ${total} s (each part's last run)."
   echo

@@ -40,11 +40,14 @@ void write_attribute(File& file, const std::string& object_path, const std::stri
 /// Opens the attribute `name` of `object_path`; bad_input if the object or attribute is missing.
 Handle open_attribute(const File& file, const std::string& object_path, const std::string& name) {
   const Handle object = file.open_object(object_path);
-  if (H5Aexists(object.get(), name.c_str()) <= 0) {
-    H5Eclear2(H5E_DEFAULT);
+  const htri_t exists = H5Aexists(object.get(), name.c_str());
+  if (exists < 0) {
+    throw Error::bad_dataset(file.name(), attribute_location(object_path, name),
+                             with_hdf5_message("cannot read the file's metadata"));
+  }
+  if (exists == 0)
     throw Error::bad_dataset(file.name(), attribute_location(object_path, name),
                              "missing attribute");
-  }
   return Handle(H5Aopen(object.get(), name.c_str(), H5P_DEFAULT), H5Aclose);
 }
 
@@ -76,6 +79,10 @@ Handle checked_attribute(const File& file, const std::string& object_path, const
   }
   return attribute;
 }
+
+/// Why a variable-length string is not read from a file without metadata checksums.
+constexpr const char* kUncheckedStringReason =
+    "variable-length string in a file without metadata checksums";
 
 /// Shortest text that reads back as `value`.
 std::string number_text(double value) {
@@ -111,12 +118,17 @@ std::string numbers_text(const std::vector<T>& values, bool is_scalar) {
 
 void write_string_attribute(File& file, const std::string& object_path, const std::string& name,
                             const std::string& value) {
+  // Fixed length, so that the text lives in the attribute's (checksummed) object header
+  // or dense storage: a variable-length string goes through the global heap, which HDF5
+  // does not checksum, and a corrupted one can crash the reader.
   const Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_size(type.get(), std::max<size_t>(value.size(), 1));
+  H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
   H5Tset_cset(type.get(), H5T_CSET_UTF8);
   const Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  const char* text = value.c_str();
-  write_attribute(file, object_path, name, type.get(), type.get(), space.get(), &text);
+  std::string padded = value;
+  padded.resize(std::max<size_t>(value.size(), 1), '\0');
+  write_attribute(file, object_path, name, type.get(), type.get(), space.get(), padded.data());
 }
 
 void write_int64_attribute(File& file, const std::string& object_path, const std::string& name,
@@ -145,7 +157,11 @@ bool has_attribute(const File& file, const std::string& object_path, const std::
   if (file.kind_of(object_path) == ObjectKind::missing) return false;
   const Handle object = file.open_object(object_path);
   const htri_t exists = H5Aexists(object.get(), name.c_str());
-  H5Eclear2(H5E_DEFAULT);
+  if (exists < 0) {
+    // Not absent: HDF5 could not read the object's attributes (a checksum failed, say).
+    throw Error::bad_dataset(file.name(), attribute_location(object_path, name),
+                             with_hdf5_message("cannot read the file's metadata"));
+  }
   return exists > 0;
 }
 
@@ -164,6 +180,9 @@ std::string read_string_attribute(const File& file, const std::string& object_pa
   const Handle memory(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
   if (H5Tis_variable_str(type.get()) > 0) {
+    // Its text is in the global heap; unchecked, a corrupted heap crashes libhdf5.
+    if (!file.has_checksummed_metadata())
+      throw Error::bad_dataset(file.name(), location, kUncheckedStringReason);
     H5Tset_size(memory.get(), H5T_VARIABLE);
     char* text = nullptr;
     if (H5Aread(attribute.get(), memory.get(), &text) < 0) {
@@ -234,6 +253,8 @@ std::string attribute_text(const File& file, const std::string& object_path,
   const bool is_scalar = attribute_shape(attribute.get()).empty();
   switch (H5Tget_class(type.get())) {
     case H5T_STRING:
+      if (is_scalar && H5Tis_variable_str(type.get()) > 0 && !file.has_checksummed_metadata())
+        return "<not read: " + std::string(kUncheckedStringReason) + ">";
       if (is_scalar) return read_string_attribute(file, object_path, name);
       break;
     case H5T_INTEGER:

@@ -13,7 +13,8 @@ namespace hair::h5 {
 // throws bad_input naming the object and attribute ("/@schema_version: expected int64,
 // found float64"); a missing attribute is a bad_input error too.
 
-/// A scalar variable-length UTF-8 string.
+/// A scalar UTF-8 string, stored fixed-length (null-padded) so that it stays in checksummed
+/// metadata. Readers take fixed- and variable-length strings alike.
 void write_string_attribute(File& file, const std::string& object_path, const std::string& name,
                             const std::string& value);
 
@@ -32,7 +33,9 @@ void write_double_array_attribute(File& file, const std::string& object_path,
 /// True if the object `object_path` exists and has an attribute `name`.
 bool has_attribute(const File& file, const std::string& object_path, const std::string& name);
 
-/// Reads a scalar string attribute (variable- or fixed-length, as h5py may write either).
+/// Reads a scalar string attribute (variable- or fixed-length, as h5py may write either). A
+/// variable-length one is read only from a file with checksummed metadata: its text sits
+/// in the global heap, which has no checksum of its own (bad_input otherwise).
 std::string read_string_attribute(const File& file, const std::string& object_path,
                                   const std::string& name);
 

@@ -14,11 +14,18 @@ std::vector<hsize_t> to_hsize(const Shape& shape) {
   return std::vector<hsize_t>(shape.begin(), shape.end());
 }
 
-/// The chunk shape of a dataset: the caller's (clamped to the extents) or, for more than
-/// kContiguousLimit elements, whole rows of the first dimension adding up to about
-/// kTargetChunkBytes; empty for contiguous storage.
-Shape chosen_chunk_shape(const Shape& shape, size_t element_bytes, const Shape& requested,
-                         const std::string& file_name, const std::string& path) {
+/// How a dataset is stored: its chunk shape (empty for an empty dataset, which has no
+/// data to store), and whether its chunks are deflated (else checksummed with Fletcher-32).
+struct ChunkLayout {
+  Shape chunk;
+  bool deflated = false;
+};
+
+/// The layout of a dataset: the caller's chunks (clamped to the extents), deflated; or,
+/// for more than kSingleChunkLimit elements, deflated chunks of whole rows of the first
+/// dimension adding up to about kTargetChunkBytes; or else one checksummed chunk.
+ChunkLayout chosen_layout(const Shape& shape, size_t element_bytes, const Shape& requested,
+                          const std::string& file_name, const std::string& path) {
   const bool is_empty = std::any_of(shape.begin(), shape.end(), [](int64_t n) { return n == 0; });
   if (!requested.empty()) {
     if (requested.size() != shape.size() ||
@@ -31,25 +38,30 @@ Shape chosen_chunk_shape(const Shape& shape, size_t element_bytes, const Shape& 
     Shape chunk = requested;
     for (size_t axis = 0; axis < shape.size(); ++axis)
       chunk[axis] = std::min(chunk[axis], shape[axis]);
-    return chunk;
+    return {chunk, true};
   }
-  if (is_empty || element_count(shape) <= kContiguousLimit) return {};
+  if (is_empty) return {};
+  if (element_count(shape) <= kSingleChunkLimit) return {shape, false};
   const int64_t row_bytes =
       element_count(Shape(shape.begin() + 1, shape.end())) * static_cast<int64_t>(element_bytes);
   Shape chunk = shape;
   chunk[0] = std::clamp<int64_t>(kTargetChunkBytes / row_bytes, 1, shape[0]);
-  return chunk;
+  return {chunk, true};
 }
 
-/// Dataset creation properties: untimed, and chunked + shuffle + deflate if `chunk` is set.
-Handle dataset_properties(const Shape& chunk) {
+/// Dataset creation properties: untimed; chunked, then shuffle + deflate or Fletcher-32.
+Handle dataset_properties(const ChunkLayout& layout) {
   Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_obj_track_times(properties.get(), false);
-  if (!chunk.empty()) {
-    const std::vector<hsize_t> chunk_dims = to_hsize(chunk);
+  if (!layout.chunk.empty()) {
+    const std::vector<hsize_t> chunk_dims = to_hsize(layout.chunk);
     H5Pset_chunk(properties.get(), static_cast<int>(chunk_dims.size()), chunk_dims.data());
-    H5Pset_shuffle(properties.get());
-    H5Pset_deflate(properties.get(), kDeflateLevel);
+    if (layout.deflated) {
+      H5Pset_shuffle(properties.get());
+      H5Pset_deflate(properties.get(), kDeflateLevel);
+    } else {
+      H5Pset_fletcher32(properties.get());
+    }
   }
   return properties;
 }
@@ -78,6 +90,8 @@ std::vector<std::string> filter_names(hid_t properties) {
       names.push_back("deflate(" + std::to_string(value_count > 0 ? values[0] : 0) + ")");
     } else if (filter == H5Z_FILTER_SHUFFLE) {
       names.push_back("shuffle");
+    } else if (filter == H5Z_FILTER_FLETCHER32) {
+      names.push_back("fletcher32");
     } else {
       names.push_back(name[0] != 0 ? name : "filter " + std::to_string(filter));
     }
@@ -186,12 +200,12 @@ void write_raw_dataset(File& file, const std::string& path, hid_t stored_type, h
   if (shape.empty())
     throw Error(ErrorKind::runtime, file.name(), path, "cannot write a rank-0 dataset");
   file.create_group(parent_path(path));
-  const Shape chunk =
-      chosen_chunk_shape(shape, H5Tget_size(memory_type), options.chunk_shape, file.name(), path);
+  const ChunkLayout layout =
+      chosen_layout(shape, H5Tget_size(memory_type), options.chunk_shape, file.name(), path);
   const std::vector<hsize_t> dims = to_hsize(shape);
   const Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
                      H5Sclose);
-  const Handle properties = dataset_properties(chunk);
+  const Handle properties = dataset_properties(layout);
   const Handle dataset(H5Dcreate2(file.id(), path.c_str(), stored_type, space.get(), H5P_DEFAULT,
                                   properties.get(), H5P_DEFAULT),
                        H5Dclose);
@@ -199,8 +213,8 @@ void write_raw_dataset(File& file, const std::string& path, hid_t stored_type, h
     throw Error(ErrorKind::runtime, file.name(), path, with_hdf5_message("cannot create dataset"));
   }
   if (element_count(shape) == 0) return;
-  if (!chunk.empty() &&
-      write_row_chunks(dataset.get(), stored_type, memory_type, values, shape, chunk))
+  if (layout.deflated &&
+      write_row_chunks(dataset.get(), stored_type, memory_type, values, shape, layout.chunk))
     return;
   if (H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0) {
     throw Error(ErrorKind::runtime, file.name(), path, with_hdf5_message("cannot write dataset"));

@@ -24,14 +24,15 @@ int64_t element_count(const Shape& shape);
 /// How a dataset is stored.
 struct DatasetOptions {
   /// Chunk shape, same rank as the data (e.g. {1, n_points, 3}: one frame per chunk).
-  /// Empty: datasets of at most kContiguousLimit elements are contiguous, larger ones
-  /// get row chunks of about kTargetChunkBytes. Chunked datasets are always compressed
-  /// with shuffle + deflate level kDeflateLevel.
+  /// Empty: datasets of at most kSingleChunkLimit elements are one uncompressed chunk
+  /// with a Fletcher-32 checksum, larger ones get row chunks of about kTargetChunkBytes,
+  /// compressed with shuffle + deflate level kDeflateLevel (the zlib stream's Adler-32 is
+  /// their checksum). Either way HDF5 refuses a chunk whose bytes were corrupted.
   Shape chunk_shape;
 };
 
-/// Largest dataset, in elements, stored contiguous and uncompressed by default.
-inline constexpr int64_t kContiguousLimit = 4096;
+/// Largest dataset, in elements, stored as one uncompressed, checksummed chunk by default.
+inline constexpr int64_t kSingleChunkLimit = 4096;
 /// Size aimed at when choosing row chunks automatically.
 inline constexpr int64_t kTargetChunkBytes = 128 * 1024;
 /// Deflate (gzip) level of chunked datasets.

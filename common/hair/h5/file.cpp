@@ -30,6 +30,18 @@ Handle strong_close_access() {
   return access;
 }
 
+/// Access properties for files hairstyle writes: strong close, and the HDF5 1.10 file
+/// format at both bounds, whatever library builds it. That format checksums all of the
+/// file's metadata (superblock version 3, object headers version 2, fixed and extensible
+/// arrays, version 2 B-trees, fractal heaps), so a flipped byte in it is a read error
+/// rather than a wild pointer; and pinning the upper bound keeps files byte-identical
+/// across library versions.
+Handle checksummed_format_access() {
+  Handle access = strong_close_access();
+  H5Pset_libver_bounds(access.get(), H5F_LIBVER_V110, H5F_LIBVER_V110);
+  return access;
+}
+
 }  // namespace
 
 std::string child_path(const std::string& group_path, const std::string& name) {
@@ -51,8 +63,11 @@ Handle untimed_group_properties() {
 File File::create(const std::filesystem::path& path, std::string display_name) {
   silence_hdf5_error_printing();
   if (display_name.empty()) display_name = path.string();
-  const Handle access = strong_close_access();
-  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
+  const Handle access = checksummed_format_access();
+  // The root group's header leaves out times too (in this format it would keep them).
+  const Handle creation(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+  H5Pset_obj_track_times(creation.get(), false);
+  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, creation.get(), access.get()), H5Fclose);
   if (!file.valid()) {
     throw Error::runtime(display_name, with_hdf5_message("cannot create HDF5 file"));
   }
@@ -77,28 +92,49 @@ File File::open_read_only(const std::filesystem::path& path, std::string display
   return File(std::move(file), std::move(display_name), false);
 }
 
+bool File::has_checksummed_metadata() const {
+  H5F_info2_t info{};
+  if (H5Fget_info2(id(), &info) < 0) {
+    H5Eclear2(H5E_DEFAULT);
+    return false;
+  }
+  return info.super.version >= kChecksummedSuperblockVersion;
+}
+
 ObjectKind File::kind_of(const std::string& path) const {
+  // Component by component, so that a missing group on the way reads as missing. Where
+  // HDF5 fails to read a group's links or an object's header (a checksum failed, say),
+  // the file is corrupt: that is an error, not a missing object.
+  const auto unreadable = [&](const std::string& where) {
+    return Error::bad_dataset(name_, where, with_hdf5_message("cannot read the file's metadata"));
+  };
+  const std::vector<std::string> components = path_components(path);
   std::string prefix;
-  for (const std::string& component : path_components(path)) {
+  ObjectKind kind = ObjectKind::group;  // the root
+  for (const std::string& component : components) {
+    if (kind != ObjectKind::group) return ObjectKind::missing;  // a path through a dataset
     prefix += "/" + component;
-    if (H5Lexists(id(), prefix.c_str(), H5P_DEFAULT) <= 0) {
-      H5Eclear2(H5E_DEFAULT);
-      return ObjectKind::missing;
+    const htri_t exists = H5Lexists(id(), prefix.c_str(), H5P_DEFAULT);
+    if (exists < 0) throw unreadable(prefix);
+    if (exists == 0) return ObjectKind::missing;
+    const Handle object(H5Oopen(id(), prefix.c_str(), H5P_DEFAULT), H5Oclose);
+    if (!object.valid()) throw unreadable(prefix);
+    switch (H5Iget_type(object.get())) {
+      case H5I_GROUP:
+        kind = ObjectKind::group;
+        break;
+      case H5I_DATASET:
+        kind = ObjectKind::dataset;
+        break;
+      default:
+        kind = ObjectKind::other;
     }
   }
-  const Handle object(H5Oopen(id(), prefix.empty() ? "/" : prefix.c_str(), H5P_DEFAULT), H5Oclose);
-  if (!object.valid()) {
-    H5Eclear2(H5E_DEFAULT);
-    return ObjectKind::missing;
+  if (components.empty()) {
+    const Handle root(H5Oopen(id(), "/", H5P_DEFAULT), H5Oclose);
+    if (!root.valid()) throw unreadable("/");
   }
-  switch (H5Iget_type(object.get())) {
-    case H5I_GROUP:
-      return ObjectKind::group;
-    case H5I_DATASET:
-      return ObjectKind::dataset;
-    default:
-      return ObjectKind::other;
-  }
+  return kind;
 }
 
 std::vector<std::string> File::member_names(const std::string& path) const {

@@ -9,6 +9,9 @@
 
 namespace hair::h5 {
 
+/// The first superblock version whose metadata HDF5 checksums (HDF5 1.8 and later formats).
+inline constexpr unsigned kChecksummedSuperblockVersion = 2;
+
 /// What an absolute path inside a file names.
 enum class ObjectKind { missing, group, dataset, other };
 
@@ -20,7 +23,8 @@ class File {
  public:
   /// Creates (or truncates) `path` for writing. `display_name` is the name errors use
   /// (e.g. the final name of an output written under a temporary name); by default the
-  /// path itself.
+  /// path itself. The file is written in the HDF5 1.10 format, whose metadata is
+  /// checksummed (has_checksummed_metadata()).
   static File create(const std::filesystem::path& path, std::string display_name = {});
 
   /// Opens an existing HDF5 file read-only. A missing file or one that is not HDF5 is a
@@ -39,7 +43,12 @@ class File {
 
   bool writable() const { return writable_; }
 
-  /// What `path` names; missing intermediate groups give ObjectKind::missing.
+  /// True if the file's metadata carries checksums (superblock version 2 or later, as
+  /// File::create writes): HDF5 then refuses corrupted metadata instead of following it.
+  bool has_checksummed_metadata() const;
+
+  /// What `path` names; missing intermediate groups give ObjectKind::missing. Metadata that
+  /// HDF5 cannot read on the way (a failed checksum) is a bad_input error naming the object.
   ObjectKind kind_of(const std::string& path) const;
 
   /// True if `path` names a group, dataset or other object.

@@ -183,18 +183,19 @@ StoredLayout stored_layout(const std::filesystem::path& path, const char* datase
   return result;
 }
 
-TEST_F(H5DatasetTest, SmallArraysAreContiguousLargeOnesChunkedAndCompressed) {
+TEST_F(H5DatasetTest, SmallArraysAreOneChecksummedChunkLargeOnesChunkedAndCompressed) {
   Points3f large = Points3f::Zero(100000, 3);
   large.col(1).setLinSpaced(0.0f, 1.0f);
   {
     File file = File::create(path("layout.h5"));
-    write_vector(file, "/small", std::vector<float>(kContiguousLimit, 1.0f));
+    write_vector(file, "/small", std::vector<float>(kSingleChunkLimit, 1.0f));
     write_matrix(file, "/large", large);
     file.close();
   }
   const StoredLayout small = stored_layout(path("layout.h5"), "/small");
-  EXPECT_EQ(small.layout, H5D_CONTIGUOUS);
-  EXPECT_TRUE(small.filters.empty());
+  EXPECT_EQ(small.layout, H5D_CHUNKED);
+  EXPECT_EQ(small.chunk, (std::vector<hsize_t>{static_cast<hsize_t>(kSingleChunkLimit)}));
+  EXPECT_EQ(small.filters, std::vector<H5Z_filter_t>{H5Z_FILTER_FLETCHER32});
 
   const StoredLayout chunked = stored_layout(path("layout.h5"), "/large");
   ASSERT_EQ(chunked.layout, H5D_CHUNKED);

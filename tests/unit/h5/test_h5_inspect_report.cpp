@@ -15,7 +15,7 @@ TEST_F(H5InspectReportTest, ConformingFileEndsWithValid) {
   EXPECT_FALSE(report.violation.has_value());
   for (const char* expected :
        {"/strands/points",
-        "float32 [7, 3]  contiguous  range [0, 1.7]  by column [0, 0.2] [1.5, 1.7] [0, 0]",
+        "float32 [7, 3]  chunked [7, 3] fletcher32  range [0, 1.7]  by column [0, 0.2] [1.5, 1.7] [0, 0]",
         "/groups/patch_kind", "strip 1, grid 1", "\nprovenance\n", "stage            extract",
         "\"min_points\": 2"}) {
     EXPECT_NE(report.text.find(expected), std::string::npos) << expected << "\n" << report.text;

@@ -58,7 +58,7 @@ TEST_F(H5TreeTest, ListsGroupsDatasetsAttributesAndSummaries) {
             (std::vector<std::pair<std::string, int64_t>>{{"strip", 1}, {"grid", 2}}));
 
   const std::string text = format_tree(entries);
-  EXPECT_NE(text.find("/b/values  float32 [3]  contiguous  range [-1, 2], 1 non-finite"),
+  EXPECT_NE(text.find("/b/values  float32 [3]  chunked [3] fletcher32  range [-1, 2], 1 non-finite"),
             std::string::npos)
       << text;
   EXPECT_NE(text.find("@scale (float64) = 0.5"), std::string::npos) << text;

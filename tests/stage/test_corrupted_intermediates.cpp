@@ -1,0 +1,194 @@
+// A byte-flipped extract.h5 (a fixed family of variants) through every program that
+// reads it: typeify, grow, classify, simulate, hair-render and hair-inspect. Each must
+// exit 0 (the flip fell where the file holds nothing) or 2 with one error line, never
+// die of a signal, and leave nothing behind but a finished output (issue 30). The
+// family's size is HAIR_CORRUPTED_VARIANTS (default 300 for each program);
+// bench/corrupted_intermediates.sh reports the counts in docs/bench/corrupted.md.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <iterator>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "sample_pipeline.h"
+#include "support/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using hair::test::kBin;
+using hair::test::kSamples;
+using hair::test::run_command;
+using hair::test::run_stage;
+using hair::test::SampleOutputs;
+using hair::test::TemporaryDirectory;
+using hair::test::text_lines;
+
+const fs::path kModel = fs::path(HAIR_SOURCE_DIR) / "models" / "style_extended.yml";
+
+/// How many variants a program gets: HAIR_CORRUPTED_VARIANTS if set, else `fallback`.
+int variant_count(int fallback) {
+  const char* text = std::getenv("HAIR_CORRUPTED_VARIANTS");
+  return text != nullptr ? std::max(1, std::atoi(text)) : fallback;
+}
+
+std::vector<uint8_t> file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Variant `index` of `valid`: 1-3 bytes, each XORed with a non-zero byte, at positions
+/// drawn from a generator seeded by the index, so that any variant can be remade alone.
+std::vector<uint8_t> flipped_variant(const std::vector<uint8_t>& valid, int index) {
+  std::mt19937_64 random(static_cast<uint64_t>(index) * 7919 + 30);
+  std::vector<uint8_t> bytes = valid;
+  const int flips = 1 + static_cast<int>(random() % 3);
+  for (int f = 0; f < flips; ++f)
+    bytes[random() % bytes.size()] ^= static_cast<uint8_t>(1 + random() % 255);
+  return bytes;
+}
+
+/// A program that reads extract.h5: its arguments given the extract file and an output
+/// path (empty for hair-inspect, which writes none).
+struct Reader {
+  std::string program;
+  std::function<std::vector<std::string>(const fs::path&, const fs::path&)> arguments;
+  std::string output_name;  ///< empty: writes nothing
+  int default_variants;
+};
+
+class CorruptedIntermediates : public ::testing::Test {
+ protected:
+  static void TearDownTestSuite() { directory_.reset(); }
+  static const TemporaryDirectory& directory() {
+    if (!directory_) directory_ = std::make_unique<TemporaryDirectory>("corrupted");
+    return *directory_;
+  }
+  /// braid01 up to styles.h5 with few strands: the inputs beside the corrupted file.
+  static const SampleOutputs& braid() {
+    static const SampleOutputs out = [] {
+      SampleOutputs made =
+          hair::test::run_sample_pipeline(directory() / "braid", kSamples / "hair" / "braid01.obj", 400);
+      run_stage("classify", {made.extract.string(), made.clusters.string(), made.strands.string(),
+                             "--model", kModel.string(), "-o", styles().string()});
+      return made;
+    }();
+    return out;
+  }
+  static fs::path styles() { return directory() / "braid" / "styles.h5"; }
+
+  /// Runs `reader` on variants 0 .. count-1 of braid01's extract.h5 and checks each run.
+  static void expect_clean_runs(const Reader& reader) {
+    const std::vector<uint8_t> valid = file_bytes(braid().extract);
+    const fs::path folder = directory() / ("runs_" + reader.program);
+    const int count = variant_count(reader.default_variants);
+    {
+      // The file as written reads: the refusals below are the flips'.
+      fs::remove_all(folder);
+      fs::create_directories(folder);
+      fs::copy_file(braid().extract, folder / "extract.h5");
+      const fs::path output = reader.output_name.empty() ? fs::path() : folder / reader.output_name;
+      std::vector<std::string> arguments = reader.arguments(folder / "extract.h5", output);
+      if (!output.empty()) arguments.insert(arguments.end(), {"-o", output.string()});
+      const auto result = run_command(kBin / reader.program, arguments);
+      ASSERT_EQ(result.exit_code, 0) << reader.program << " on the valid file: " << result.err;
+    }
+    int refused = 0;
+    for (int index = 0; index < count; ++index) {
+      fs::remove_all(folder);
+      fs::create_directories(folder);
+      const fs::path extract = folder / "extract.h5";
+      {
+        const std::vector<uint8_t> bytes = flipped_variant(valid, index);
+        std::ofstream(extract, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+      }
+      const fs::path output = reader.output_name.empty() ? fs::path() : folder / reader.output_name;
+      std::vector<std::string> arguments = reader.arguments(extract, output);
+      if (!output.empty()) arguments.insert(arguments.end(), {"-o", output.string()});
+      const auto result = run_command(kBin / reader.program, arguments);
+      const std::string what = reader.program + ", variant " + std::to_string(index);
+      ASSERT_TRUE(result.exit_code == 0 || result.exit_code == 2)
+          << what << ": exit " << result.exit_code << "\n" << result.err;
+      std::vector<std::string> left;
+      for (const auto& entry : fs::directory_iterator(folder)) left.push_back(entry.path().filename());
+      std::sort(left.begin(), left.end());
+      std::vector<std::string> expected = {"extract.h5"};
+      if (result.exit_code == 0 && !output.empty()) expected.push_back(reader.output_name);
+      std::sort(expected.begin(), expected.end());
+      EXPECT_EQ(left, expected) << what;
+      if (result.exit_code == 2) {
+        ++refused;
+        // hair-inspect lists what it could read of an invalid file on stdout and ends the
+        // listing with the violation; a file it cannot open is one line on stderr.
+        const std::vector<std::string> out_lines = text_lines(result.out);
+        if (reader.output_name.empty() && result.err.empty() && !out_lines.empty()) {
+          EXPECT_TRUE(out_lines.back().starts_with("invalid: ")) << what << ": " << result.out;
+          EXPECT_NE(out_lines.back().find("extract.h5"), std::string::npos) << what;
+          continue;
+        }
+        const std::vector<std::string> lines = text_lines(result.err);
+        ASSERT_EQ(lines.size(), 1u) << what << ": " << result.err;
+        EXPECT_NE(lines[0].find("extract.h5"), std::string::npos) << what << ": " << lines[0];
+      }
+    }
+    std::cout << "corrupted: " << reader.program << ": " << count << " variants, " << refused
+              << " refused (exit 2), " << count - refused << " read (exit 0), 0 signals\n";
+    // Most flipped bytes fall on checksummed metadata or chunks.
+    EXPECT_GE(refused, count / 2) << reader.program << ": " << refused << " of " << count;
+  }
+
+ private:
+  static inline std::unique_ptr<TemporaryDirectory> directory_;
+};
+
+TEST_F(CorruptedIntermediates, Typeify) {
+  expect_clean_runs({"typeify", [](const fs::path& extract, const fs::path&) {
+                       return std::vector<std::string>{extract.string(), "--quiet"};
+                     }, "types.h5", 300});
+}
+
+TEST_F(CorruptedIntermediates, HairInspect) {
+  expect_clean_runs({"hair-inspect", [](const fs::path& extract, const fs::path&) {
+                       return std::vector<std::string>{extract.string()};
+                     }, "", 300});
+}
+
+TEST_F(CorruptedIntermediates, Grow) {
+  expect_clean_runs({"grow", [](const fs::path& extract, const fs::path&) {
+                       return std::vector<std::string>{extract.string(), braid().types.string(),
+                                                       braid().clusters.string(), "--strand_count",
+                                                       "400", "--quiet"};
+                     }, "strands.h5", 300});
+}
+
+TEST_F(CorruptedIntermediates, Classify) {
+  expect_clean_runs({"classify", [](const fs::path& extract, const fs::path&) {
+                       return std::vector<std::string>{extract.string(), braid().clusters.string(),
+                                                       braid().strands.string(), "--model",
+                                                       kModel.string(), "--quiet"};
+                     }, "styles.h5", 300});
+}
+
+TEST_F(CorruptedIntermediates, Simulate) {
+  expect_clean_runs({"simulate", [](const fs::path& extract, const fs::path&) {
+                       return std::vector<std::string>{extract.string(), braid().strands.string(),
+                                                       styles().string(), "--duration_s", "0.05", "--quiet"};
+                     }, "guides.h5", 300});
+}
+
+TEST_F(CorruptedIntermediates, HairRender) {
+  expect_clean_runs({"hair-render", [](const fs::path& extract, const fs::path&) {
+                       return std::vector<std::string>{extract.string()};
+                     }, "extract.png", 300});
+}
+
+}  // namespace
