@@ -3,7 +3,9 @@
 // exit 0 (the flip fell where the file holds nothing) or 2 with one error line, never
 // die of a signal, and leave nothing behind but a finished output (issue 30). The
 // family's size is HAIR_CORRUPTED_VARIANTS (default 300 for each program);
-// bench/corrupted_intermediates.sh reports the counts in docs/bench/corrupted.md.
+// bench/corrupted_intermediates.sh reports the counts in docs/bench/corrupted.md. And
+// well-formed files whose contents do not hold together (offsets that do not end at the
+// point count, an id out of range, a NaN) are refused naming the file and dataset.
 
 #include <gtest/gtest.h>
 
@@ -18,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "clean_failures.h"
+#include "hair/h5/dataset.h"
 #include "sample_pipeline.h"
 #include "support/run_command.h"
 
@@ -189,6 +193,53 @@ TEST_F(CorruptedIntermediates, HairRender) {
   expect_clean_runs({"hair-render", [](const fs::path& extract, const fs::path&) {
                        return std::vector<std::string>{extract.string()};
                      }, "extract.png", 300});
+}
+
+/// A copy of `source` at `copy` with element `index` of the 1-D int dataset `path` set
+/// to `value` (written through HDF5, so that every checksum still holds: the file is
+/// well-formed, its contents are not).
+template <typename T>
+fs::path copy_with_value(const fs::path& source, const fs::path& copy, const char* path,
+                         int64_t index, T value) {
+  fs::copy_file(source, copy, fs::copy_options::overwrite_existing);
+  std::vector<T> values =
+      hair::h5::read_vector<T>(hair::h5::File::open_read_only(source), path);
+  values.at(static_cast<size_t>(index < 0 ? static_cast<int64_t>(values.size()) + index : index)) =
+      value;
+  const hid_t file = H5Fopen(copy.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  const hid_t dataset = H5Dopen2(file, path, H5P_DEFAULT);
+  const hid_t type = std::is_same_v<T, int64_t> ? H5T_NATIVE_INT64 : H5T_NATIVE_INT32;
+  EXPECT_GE(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+  H5Dclose(dataset);
+  H5Fclose(file);
+  return copy;
+}
+
+TEST_F(CorruptedIntermediates, WellFormedFilesWithInconsistentContentsAreRefusedByName) {
+  const fs::path folder = directory() / "inconsistent";
+  fs::create_directories(folder);
+  const fs::path extract = braid().extract;
+  const int64_t points =
+      static_cast<int64_t>(hair::h5::read_vector<int64_t>(hair::h5::File::open_read_only(extract),
+                                                          "/strands/offsets")
+                               .back());
+  const int64_t groups =
+      hair::h5::dataset_info(hair::h5::File::open_read_only(extract), "/groups/first_strand")
+          .shape[0] - 1;
+  // Each error names the file and the dataset.
+  const std::vector<hair::test::FailureCase> cases = {
+      {{copy_with_value<int64_t>(extract, folder / "offsets.h5", "/strands/offsets", -1,
+                                 points - 1).string()},
+       "offsets.h5:/strands/offsets"},
+      {{copy_with_value<int32_t>(extract, folder / "group_id.h5",
+                                 "/strands/strand_attributes/group", 0,
+                                 static_cast<int32_t>(groups)).string()},
+       "group_id.h5:/strands/strand_attributes/group"},
+      {{hair::test::copy_with_nan(extract, folder / "nan.h5", "/strands/points").string()},
+       "nan.h5:/strands/points"},
+  };
+  hair::test::expect_clean_failures(kBin / "typeify", "typeify", cases, folder / "runs",
+                                    braid().types);
 }
 
 }  // namespace

@@ -80,10 +80,6 @@ Handle checked_attribute(const File& file, const std::string& object_path, const
   return attribute;
 }
 
-/// Why a variable-length string is not read from a file without metadata checksums.
-constexpr const char* kUncheckedStringReason =
-    "variable-length string in a file without metadata checksums";
-
 /// Shortest text that reads back as `value`.
 std::string number_text(double value) {
   char buffer[32];
@@ -180,9 +176,6 @@ std::string read_string_attribute(const File& file, const std::string& object_pa
   const Handle memory(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
   if (H5Tis_variable_str(type.get()) > 0) {
-    // Its text is in the global heap; unchecked, a corrupted heap crashes libhdf5.
-    if (!file.has_checksummed_metadata())
-      throw Error::bad_dataset(file.name(), location, kUncheckedStringReason);
     H5Tset_size(memory.get(), H5T_VARIABLE);
     char* text = nullptr;
     if (H5Aread(attribute.get(), memory.get(), &text) < 0) {
@@ -253,8 +246,6 @@ std::string attribute_text(const File& file, const std::string& object_path,
   const bool is_scalar = attribute_shape(attribute.get()).empty();
   switch (H5Tget_class(type.get())) {
     case H5T_STRING:
-      if (is_scalar && H5Tis_variable_str(type.get()) > 0 && !file.has_checksummed_metadata())
-        return "<not read: " + std::string(kUncheckedStringReason) + ">";
       if (is_scalar) return read_string_attribute(file, object_path, name);
       break;
     case H5T_INTEGER:

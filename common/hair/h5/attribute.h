@@ -33,9 +33,7 @@ void write_double_array_attribute(File& file, const std::string& object_path,
 /// True if the object `object_path` exists and has an attribute `name`.
 bool has_attribute(const File& file, const std::string& object_path, const std::string& name);
 
-/// Reads a scalar string attribute (variable- or fixed-length, as h5py may write either). A
-/// variable-length one is read only from a file with checksummed metadata: its text sits
-/// in the global heap, which has no checksum of its own (bad_input otherwise).
+/// Reads a scalar string attribute (variable- or fixed-length, as h5py may write either).
 std::string read_string_attribute(const File& file, const std::string& object_path,
                                   const std::string& name);
 

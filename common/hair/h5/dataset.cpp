@@ -53,6 +53,7 @@ ChunkLayout chosen_layout(const Shape& shape, size_t element_bytes, const Shape&
 Handle dataset_properties(const ChunkLayout& layout) {
   Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_obj_track_times(properties.get(), false);
+  keep_in_object_header(properties.get(), false);
   if (!layout.chunk.empty()) {
     const std::vector<hsize_t> chunk_dims = to_hsize(layout.chunk);
     H5Pset_chunk(properties.get(), static_cast<int>(chunk_dims.size()), chunk_dims.data());

@@ -1,5 +1,6 @@
 #include "hair/h5/file.h"
 
+#include <optional>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -54,9 +55,16 @@ std::string parent_path(const std::string& path) {
   return path.substr(0, slash);
 }
 
+void keep_in_object_header(hid_t creation_properties, bool has_links) {
+  H5Pset_attr_phase_change(creation_properties, kMaxCompactMembers, kMaxCompactMembers);
+  if (has_links)
+    H5Pset_link_phase_change(creation_properties, kMaxCompactMembers, kMaxCompactMembers);
+}
+
 Handle untimed_group_properties() {
   Handle properties(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
   H5Pset_obj_track_times(properties.get(), false);
+  keep_in_object_header(properties.get(), true);
   return properties;
 }
 
@@ -64,9 +72,11 @@ File File::create(const std::filesystem::path& path, std::string display_name) {
   silence_hdf5_error_printing();
   if (display_name.empty()) display_name = path.string();
   const Handle access = checksummed_format_access();
-  // The root group's header leaves out times too (in this format it would keep them).
+  // The root group's header leaves out times too (in this format it would keep them),
+  // and keeps its links and attributes in itself, as every group does.
   const Handle creation(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
   H5Pset_obj_track_times(creation.get(), false);
+  keep_in_object_header(creation.get(), true);
   Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, creation.get(), access.get()), H5Fclose);
   if (!file.valid()) {
     throw Error::runtime(display_name, with_hdf5_message("cannot create HDF5 file"));
@@ -89,7 +99,9 @@ File File::open_read_only(const std::filesystem::path& path, std::string display
   if (!file.valid()) {
     throw Error::bad_input(display_name, with_hdf5_message("cannot open HDF5 file"));
   }
-  return File(std::move(file), std::move(display_name), false);
+  File opened(std::move(file), std::move(display_name), false);
+  if (std::optional<Error> unchecked = opened.unchecked_metadata()) throw std::move(*unchecked);
+  return opened;
 }
 
 bool File::has_checksummed_metadata() const {
@@ -99,6 +111,71 @@ bool File::has_checksummed_metadata() const {
     return false;
   }
   return info.super.version >= kChecksummedSuperblockVersion;
+}
+
+namespace {
+
+/// Members of the group `group` that are groups or datasets (hard links only: soft and
+/// external links are not followed), as paths; nothing if HDF5 cannot list them.
+std::optional<std::vector<std::string>> hard_link_members(hid_t file, const std::string& group) {
+  std::vector<std::string> names;
+  hsize_t index = 0;
+  if (H5Literate_by_name(
+          file, group.c_str(), H5_INDEX_NAME, H5_ITER_INC, &index,
+          [](hid_t, const char* name, const H5L_info_t* info, void* data) -> herr_t {
+            if (info->type == H5L_TYPE_HARD)
+              static_cast<std::vector<std::string>*>(data)->push_back(name);
+            return 0;
+          },
+          &names, H5P_DEFAULT) < 0)
+    return std::nullopt;
+  for (std::string& name : names) name = child_path(group, name);
+  return names;
+}
+
+}  // namespace
+
+std::optional<Error> File::unchecked_metadata() const {
+  H5F_info2_t file_info{};
+  const auto unreadable = [&](const std::string& where) {
+    return Error::bad_dataset(name_, where, with_hdf5_message("cannot read the file's metadata"));
+  };
+  if (H5Fget_info2(id(), &file_info) < 0) return unreadable("/");
+  if (file_info.super.version < kChecksummedSuperblockVersion) {
+    return Error::bad_input(
+        name_, "written without metadata checksums (HDF5 superblock version " +
+                   std::to_string(file_info.super.version) + "; hairstyle writes version " +
+                   std::to_string(kWrittenSuperblockVersion) +
+                   "), not by this hairstyle: rerun the stage that wrote it");
+  }
+  // Every object's links and attributes in its own (checksummed) header, as hairstyle
+  // writes them: "dense" storage keeps them in fractal heap blocks without checksums.
+  // Each group's storage is read from its header before its links are listed, so
+  // nothing unchecked is followed on the way.
+  std::vector<std::string> pending = {"/"};
+  while (!pending.empty()) {
+    const std::string path = pending.back();
+    pending.pop_back();
+    H5O_info_t info{};
+    if (H5Oget_info_by_name2(id(), path.c_str(), &info, H5O_INFO_BASIC | H5O_INFO_META_SIZE,
+                             H5P_DEFAULT) < 0)
+      return unreadable(path);
+    const std::string unchecked =
+        ", which HDF5 does not checksum (not written by this hairstyle): rerun the stage "
+        "that wrote it";
+    if (info.meta_size.attr.heap_size > 0)
+      return Error::bad_dataset(name_, path, "attributes in dense storage" + unchecked);
+    if (info.type != H5O_TYPE_GROUP) continue;
+    H5G_info_t group{};
+    if (H5Gget_info_by_name(id(), path.c_str(), &group, H5P_DEFAULT) < 0)
+      return unreadable(path);
+    if (group.storage_type != H5G_STORAGE_TYPE_COMPACT && group.nlinks > 0)
+      return Error::bad_dataset(name_, path, "links in dense storage" + unchecked);
+    const std::optional<std::vector<std::string>> members = hard_link_members(id(), path);
+    if (!members) return unreadable(path);
+    pending.insert(pending.end(), members->begin(), members->end());
+  }
+  return std::nullopt;
 }
 
 ObjectKind File::kind_of(const std::string& path) const {

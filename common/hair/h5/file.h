@@ -1,16 +1,20 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "hair/core/error.h"
 #include "hair/h5/handle.h"
 
 namespace hair::h5 {
 
 /// The first superblock version whose metadata HDF5 checksums (HDF5 1.8 and later formats).
 inline constexpr unsigned kChecksummedSuperblockVersion = 2;
+/// The superblock version of the files File::create writes (the HDF5 1.10 format).
+inline constexpr unsigned kWrittenSuperblockVersion = 3;
 
 /// What an absolute path inside a file names.
 enum class ObjectKind { missing, group, dataset, other };
@@ -27,8 +31,10 @@ class File {
   /// checksummed (has_checksummed_metadata()).
   static File create(const std::filesystem::path& path, std::string display_name = {});
 
-  /// Opens an existing HDF5 file read-only. A missing file or one that is not HDF5 is a
-  /// bad_input error.
+  /// Opens an existing HDF5 file read-only. A missing file, one that is not HDF5, and one
+  /// whose metadata is not checksummed throughout (unchecked_metadata()) is a bad_input
+  /// error: libhdf5 follows unchecked metadata as it finds it, and corrupted, it can
+  /// crash the reader.
   static File open_read_only(const std::filesystem::path& path, std::string display_name = {});
 
   File(File&& other) noexcept = default;
@@ -46,6 +52,13 @@ class File {
   /// True if the file's metadata carries checksums (superblock version 2 or later, as
   /// File::create writes): HDF5 then refuses corrupted metadata instead of following it.
   bool has_checksummed_metadata() const;
+
+  /// Why HDF5 would follow some of this file's metadata unchecked (a bad_input error
+  /// naming the file and the object), or nothing: a
+  /// superblock before version 2, or an object keeping its links or attributes in
+  /// "dense" storage (fractal heaps, whose blocks have no checksum), which hairstyle
+  /// never writes (kMaxCompactMembers). open_read_only() refuses such a file.
+  std::optional<Error> unchecked_metadata() const;
 
   /// What `path` names; missing intermediate groups give ObjectKind::missing. Metadata that
   /// HDF5 cannot read on the way (a failed checksum) is a bad_input error naming the object.
@@ -82,8 +95,20 @@ class File {
   bool writable_ = false;
 };
 
+/// Most links or attributes an object keeps in its own header ("compact" storage). HDF5
+/// moves more than 8 (its default) into "dense" storage, a fractal heap whose blocks carry
+/// no checksum, where a corrupted link crashed libhdf5 (H5G__dense_iterate) under the
+/// fuzzer; object headers are checksummed. hairstyle's groups hold tens of members.
+inline constexpr unsigned kMaxCompactMembers = 65535;
+
+/// Sets object creation properties (of a file's root group, a group or a dataset) so
+/// that the object keeps its attributes, and with `has_links` its links, in its header
+/// (kMaxCompactMembers).
+void keep_in_object_header(hid_t creation_properties, bool has_links);
+
 /// Group creation properties that leave out modification times, so that equal content
-/// gives byte-identical files. Used for every group and dataset hairstyle creates.
+/// gives byte-identical files, and keep links and attributes in the checksummed header
+/// (keep_in_object_header()). Used for every group hairstyle creates.
 Handle untimed_group_properties();
 
 /// The path of member `name` of the group `group_path`: ("/a", "b") -> "/a/b", ("/", "b") -> "/b".

@@ -21,6 +21,7 @@ FrameDatasetWriter::FrameDatasetWriter(File& file, const std::string& path, int6
   Handle space(H5Screate_simple(3, dims.data(), nullptr), H5Sclose);
   Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_obj_track_times(properties.get(), false);
+  keep_in_object_header(properties.get(), false);
   if (frames > 0 && rows > 0 && columns > 0) {
     std::array<hsize_t, 3> chunk = {1, dims[1], dims[2]};
     H5Pset_chunk(properties.get(), 3, chunk.data());

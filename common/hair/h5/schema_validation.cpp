@@ -85,13 +85,6 @@ class Validator {
   }
 
   void check_identity() const {
-    // Before any attribute is read: without checksums, a corrupted file's metadata is
-    // followed as it is, and libhdf5 itself can crash on it.
-    if (!file_.has_checksummed_metadata()) {
-      fail("/", "written without metadata checksums (HDF5 superblock before version " +
-                    std::to_string(kChecksummedSuperblockVersion) +
-                    ", not by this hairstyle); rerun the stage that wrote it");
-    }
     if (!has_attribute(file_, "/", "schema")) {
       fail("/@schema", "missing root attribute: not a hairstyle intermediate file");
     }

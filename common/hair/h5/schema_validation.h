@@ -18,8 +18,7 @@ namespace hair::h5 {
 /// The first violation of `schema` by `file`, as a bad_input Error naming the file and
 /// the dataset or attribute ("extract.h5:/strands/points: expected float32, found
 /// float64"), or nothing if the file conforms. Checks, in this order: the `schema` and
-/// `schema_version` attributes (after the file format: its metadata must be checksummed,
-/// File::has_checksummed_metadata()), the root attributes, every dataset's presence, dtype and
+/// `schema_version` attributes, the root attributes, every dataset's presence, dtype and
 /// shape (binding dimensions on first use), then every dataset's values.
 std::optional<Error> first_violation(const File& file, const Schema& schema);
 

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include "hair/core/error.h"
@@ -145,7 +146,8 @@ class ObjParser {
   void read_material_library(std::string_view arguments, PolyMesh& mesh) {
     std::vector<std::string> names;
     std::string whole = trimmed(arguments);
-    if (std::filesystem::is_regular_file(folder_ / whole)) {
+    std::error_code status;  // a name the file system refuses (too long, say) is no file
+    if (std::filesystem::is_regular_file(folder_ / whole, status)) {
       names.push_back(whole);
     } else {
       std::string_view rest = arguments;

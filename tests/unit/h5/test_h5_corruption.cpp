@@ -63,6 +63,10 @@ TEST_F(H5Corruption, WrittenFilesChecksumTheirMetadataAndEveryChunk) {
   const fs::path path = valid_extract();
   const hair::h5::File file = hair::h5::File::open_read_only(path);
   EXPECT_TRUE(file.has_checksummed_metadata());
+  EXPECT_FALSE(file.unchecked_metadata().has_value());
+  H5F_info2_t file_info{};
+  ASSERT_GE(H5Fget_info2(file.id(), &file_info), 0);
+  EXPECT_EQ(file_info.super.version, hair::h5::kWrittenSuperblockVersion);
   for (const char* dataset : {"/strands/points", "/strands/offsets", "/body/vertices"}) {
     const hair::h5::DatasetInfo info = hair::h5::dataset_info(file, dataset);
     EXPECT_EQ(info.filters, std::vector<std::string>{"fletcher32"}) << dataset;
@@ -72,6 +76,36 @@ TEST_F(H5Corruption, WrittenFilesChecksumTheirMetadataAndEveryChunk) {
   const hair::h5::Handle type(H5Aget_type(attribute.get()), H5Tclose);
   EXPECT_EQ(H5Tis_variable_str(type.get()), 0);
   EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "schema"), "hairstyle.extract");
+}
+
+TEST_F(H5Corruption, LinksAndAttributesStayInTheObjectHeadersHoweverMany) {
+  // More than HDF5's default of 8 go to "dense" fractal heaps, whose blocks carry no
+  // checksum; hairstyle keeps them in the (checksummed) object headers.
+  const fs::path path = directory_.path() / "many.h5";
+  {
+    hair::h5::File file = hair::h5::File::create(path);
+    for (int k = 0; k < 20; ++k) {
+      const std::string name = "member" + std::to_string(k);
+      hair::h5::write_int64_attribute(file, "/", name, k);
+      hair::h5::write_vector<float>(file, "/group/" + name, {1.0f, 2.0f});
+      hair::h5::write_int64_attribute(file, "/group/" + name, "index", k);
+    }
+    file.close();
+  }
+  const hair::h5::File file = hair::h5::File::open_read_only(path);
+  for (const char* object : {"/", "/group", "/group/member7"}) {
+    H5O_info_t header{};
+    ASSERT_GE(H5Oget_info_by_name2(file.id(), object, &header, H5O_INFO_META_SIZE, H5P_DEFAULT), 0);
+    EXPECT_EQ(header.meta_size.attr.heap_size, 0u) << object;
+  }
+  for (const char* group : {"/", "/group"}) {
+    H5G_info_t links{};
+    ASSERT_GE(H5Gget_info_by_name(file.id(), group, &links, H5P_DEFAULT), 0) << group;
+    EXPECT_EQ(links.storage_type, H5G_STORAGE_TYPE_COMPACT) << group;
+  }
+  H5G_info_t group{};
+  ASSERT_GE(H5Gget_info_by_name(file.id(), "/group", &group, H5P_DEFAULT), 0);
+  EXPECT_EQ(group.nlinks, 20u);
 }
 
 TEST_F(H5Corruption, ByteFlippedFilesAreReadOrRefusedNeverTrustedWrong) {
@@ -113,22 +147,49 @@ TEST_F(H5Corruption, AFileCutAtAnyByteIsRefusedByName) {
 }
 
 TEST_F(H5Corruption, AFileWithoutMetadataChecksumsIsRefused) {
-  // Written as HDF5 writes by default (superblock version 0: nothing checksummed), with
-  // a valid schema otherwise: a file of an older hairstyle or of another writer.
+  // Written as HDF5 writes by default (superblock version 0: nothing checksummed): a
+  // file of an older hairstyle or of another writer.
   const fs::path path = directory_.path() / "unchecked.h5";
   const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   H5Fclose(file);
-  {
-    hair::h5::File opened = hair::h5::File::open_read_only(path);
-    EXPECT_FALSE(opened.has_checksummed_metadata());
-  }
   const std::optional<Error> error = extract_read_error(path);
   ASSERT_TRUE(error.has_value());
   EXPECT_EQ(error->kind(), ErrorKind::bad_input);
-  EXPECT_NE(std::string(error->what()).find("written without metadata checksums"),
-            std::string::npos)
-      << error->what();
+  EXPECT_EQ(std::string(error->what()),
+            "extract.h5: written without metadata checksums (HDF5 superblock version 0; "
+            "hairstyle writes version 3), not by this hairstyle: rerun the stage that wrote it");
+}
+
+TEST_F(H5Corruption, AFileKeepingAttributesOrLinksInDenseStorageIsRefused) {
+  // The checksummed format, but with HDF5's default of at most 8 links or attributes
+  // kept in an object's header: more go to fractal heap blocks without checksums, where
+  // a corrupted link crashed libhdf5 under the fuzzer.
+  for (const bool links : {false, true}) {
+    const fs::path path = directory_.path() / (links ? "dense_links.h5" : "dense_attributes.h5");
+    const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+    H5Pset_libver_bounds(access, H5F_LIBVER_V110, H5F_LIBVER_V110);
+    const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
+    H5Pclose(access);
+    const hid_t group = H5Gcreate2(file, "/many", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    for (int k = 0; k < 12; ++k) {
+      const std::string name = "member" + std::to_string(k);
+      const hid_t object = links ? H5Gcreate2(group, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)
+                                 : H5Acreate2(group, name.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT);
+      links ? H5Gclose(object) : H5Aclose(object);
+    }
+    H5Sclose(space);
+    H5Gclose(group);
+    H5Fclose(file);
+    const std::optional<Error> error = extract_read_error(path);
+    ASSERT_TRUE(error.has_value());
+    EXPECT_EQ(error->kind(), ErrorKind::bad_input);
+    EXPECT_TRUE(std::string(error->what())
+                    .starts_with(std::string("extract.h5:/many: ") +
+                                 (links ? "links" : "attributes") + " in dense storage"))
+        << error->what();
+  }
 }
 
 }  // namespace
