@@ -109,6 +109,23 @@ out=${OUT:-docs/bench}/fuzz.md
   total=$(tail -n +2 "$summary" | awk -F'\t' '{s += $7} END {print s + 0}')
   echo "Findings in all: $total. Each finding becomes a regression input in"
   echo "tests/fuzz/inputs/<target>/, which \`FuzzInputs.*\` reads in every test run."
+  echo
+  echo "## Regression inputs: what earlier runs found, since fixed"
+  echo
+  echo "| input | what it was |"
+  echo "|---|---|"
+  for input in tests/fuzz/inputs/*/regression_*; do
+    [[ -e $input ]] || continue
+    name=$(basename "$input")
+    case $name in
+      regression_mtllib_name_too_long*) what="an \`mtllib\` name longer than the file system allows: an exception escaped (now a warning; the mesh is read without its images)" ;;
+      regression_glb_huge_chunk*) what="a GLB header declaring 4 GiB: assimp allocated it (now refused by name: mesh_container_checks.h)" ;;
+      regression_ply_header_unknown_line*) what="a PLY header with an unknown line and no end_header: assimp's PLY reader never returned (now refused by line)" ;;
+      regression_dense_links*) what="an intermediate whose group kept its links in an unchecksummed fractal heap: libhdf5 crashed (SEGV) listing it (links now stay in checksummed headers; such files are refused at open)" ;;
+      *) what="see the commit that added it" ;;
+    esac
+    echo "| \`${input#tests/fuzz/inputs/}\` | $what |"
+  done
 } > "$out"
 echo "wrote $out"
 cat "$out"

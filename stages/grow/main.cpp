@@ -46,6 +46,13 @@ int main(int argc, char** argv) {
         "a root-type group that continues another (its cluster does not start at the root) is "
         "entered from this far, in H",
         hair::ParamRange::above(0));
+  p.add("continued_root_max_angle_deg", params.continued_root_max_angle_deg,
+        "...turning by up to this angle (hair turns where a band gathers it)",
+        hair::ParamRange::closed(0, 180));
+  p.add("join_continued_flow", params.join_continued_flow,
+        "where the hair continues into a cluster that does not start at the root (a tail after "
+        "its band), a strand whose card ends before it joins the nearest card running its way "
+        "into it (false: it ends with its card)");
   p.add("follow_radius_h", params.follow_radius_h,
         "a strand following an input strand is lost farther than this from its group, in H",
         hair::ParamRange::above(0));
@@ -78,11 +85,11 @@ int main(int argc, char** argv) {
     hair::GrowResult result = hair::grow_strands(input, params);
     spdlog::info(
         "{}: {} strands, {} points, {} pushed out of the body, {} continuations ({} "
-        "into another cluster)",
+        "into another cluster); {} strands joined the cards feeding a continued cluster",
         extract_path, result.strands.strand_count(), result.strands.point_count(),
         result.points_pushed_out,
         result.continuations_same_cluster + result.continuations_other_cluster,
-        result.continuations_other_cluster);
+        result.continuations_other_cluster, result.strands_joining_continued_flow);
 
     hair::AtomicFile output(app.output_path());
     hair::h5::File file = hair::h5::File::create(output.temporary_path(), app.output_path());

@@ -164,6 +164,56 @@ TEST_F(GrowCli, GrowsTheBraidSample) { expect_valid_strands(sample("braid01", tr
 
 TEST_F(GrowCli, GrowsThePonytailSample) { expect_valid_strands(sample("ponytail01", true)); }
 
+// The paper's section 4.4 and its Figure 11: a ponytail's tail carries the hair that feeds
+// it. All of ponytail01's hair is pulled back from the scalp into a band and on into a
+// tail that hangs down the back, below the neck, where no other hair of the mesh reaches:
+// a strand that ends there has run through the band. Its points are continuous from the
+// root (no jump between points longer than a growing step and a bridge allow).
+TEST_F(GrowCli, ThePonytailsCapStrandsRunThroughTheBandIntoTheTail) {
+  const Outputs out = sample("ponytail01", true);
+  const double neck_y_m = hair::h5::read_double_attribute(
+      hair::h5::File::open_read_only(out.extract), "/", "neck_y_m");
+  // The share of strands whose tip hangs in the tail, and the longest jump between two
+  // points of such a strand, in H.
+  const auto tail_share = [&](const fs::path& path, double& longest_jump_h) {
+    const hair::GrownStrands grown = hair::read_grown_strands(hair::h5::File::open_read_only(path));
+    const hair::StrandSet& strands = grown.strands;
+    int64_t into_tail = 0;
+    longest_jump_h = 0;
+    for (int64_t s = 0; s < strands.strand_count(); ++s) {
+      const int64_t tip = strands.offsets[s + 1] - 1;
+      if (strands.points(tip, 1) >= neck_y_m) continue;
+      ++into_tail;
+      for (int64_t row = strands.offsets[s]; row < tip; ++row)
+        longest_jump_h = std::max(
+            longest_jump_h,
+            static_cast<double>((strands.points.row(row + 1) - strands.points.row(row)).norm()) /
+                grown.head_height_m);
+    }
+    return static_cast<double>(into_tail) / static_cast<double>(strands.strand_count());
+  };
+  const fs::path joined = out.strands.parent_path() / "joined.h5";
+  std::vector<std::string> arguments = out.grow_inputs();
+  arguments.insert(arguments.end(), {"--strand_count", std::to_string(kStrands),
+                                     "--join_continued_flow=true", "-o", joined.string()});
+  run_stage("grow", arguments);
+  double jump_default_h = 0, jump_joined_h = 0;
+  const double share_default = tail_share(out.strands, jump_default_h);
+  const double share_joined = tail_share(joined, jump_joined_h);
+  std::printf("ponytail01: %.1f%% of %d strands end in the tail (%.1f%% joining the cards that "
+              "feed it); longest jump %.3f H (%.3f H)\n",
+              100 * share_default, kStrands, 100 * share_joined, jump_default_h, jump_joined_h);
+  // The target is 80%. The cards at the front of the crown (a tenth of the roots)
+  // are read from the crown to the hairline (extract's continuation rule), so their
+  // strands grow forward, away from the band; and by default the side cards' strands end
+  // on the cap where their cards do (GrowParams::join_continued_flow says why it is off).
+  EXPECT_GE(share_default, 0.6);
+  EXPECT_GE(share_joined, 0.75);
+  EXPECT_GT(share_joined, share_default + 0.05);
+  EXPECT_LE(jump_default_h, 0.1);
+  EXPECT_LE(jump_joined_h, 0.1);
+}
+
 TEST_F(GrowCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
   const Outputs braid = sample("braid01", true);
   const std::string first = read_file_bytes(braid.strands);

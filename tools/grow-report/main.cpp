@@ -84,12 +84,19 @@ int main(int argc, char** argv) {
         hair::h5::File::open_read_only(strands_path), "/clusters/strand_count");
     const std::string label = name.empty() ? strands_path : name;
     if (clusters) {
-      std::printf("| %s: cluster | strands | share |\n|---:|---:|---:|\n", label.c_str());
+      const std::vector<hair::ClusterPassage> passages = hair::cluster_passages(
+          grown.strands, static_cast<int64_t>(strand_count_by_cluster.size()));
+      std::printf(
+          "| %s: cluster | strands | share | ending in another cluster | passing in from "
+          "others |\n|---:|---:|---:|---:|---:|\n",
+          label.c_str());
       for (size_t c = 0; c < strand_count_by_cluster.size(); ++c)
-        std::printf("| %zu | %lld | %.1f%% |\n", c,
+        std::printf("| %zu | %lld | %.1f%% | %lld | %lld |\n", c,
                     static_cast<long long>(strand_count_by_cluster[c]),
                     100.0 * static_cast<double>(strand_count_by_cluster[c]) /
-                        static_cast<double>(std::max<int64_t>(1, grown.strands.strand_count())));
+                        static_cast<double>(std::max<int64_t>(1, grown.strands.strand_count())),
+                    static_cast<long long>(passages[c].rooted_leaving),
+                    static_cast<long long>(passages[c].passing_in));
       return 0;
     }
     hair::GrowMeasures m = hair::measure_grown_strands(

@@ -168,4 +168,27 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
   return measures;
 }
 
+std::vector<ClusterPassage> cluster_passages(const StrandSet& grown, int64_t cluster_count) {
+  std::vector<ClusterPassage> passages(static_cast<size_t>(std::max<int64_t>(cluster_count, 0)));
+  const auto& root_cluster = std::get<std::vector<int32_t>>(grown.strand_attributes.at("cluster"));
+  const auto& point_cluster = std::get<std::vector<int32_t>>(grown.point_attributes.at("cluster"));
+  const auto valid = [&](int32_t c) { return c >= 0 && c < cluster_count; };
+  std::vector<int64_t> last_seen(passages.size(), -1);  // the strand that last counted it
+  for (int64_t s = 0; s < grown.strand_count(); ++s) {
+    const int32_t root = root_cluster[static_cast<size_t>(s)];
+    const int32_t tip = point_cluster[static_cast<size_t>(grown.offsets[s + 1] - 1)];
+    if (valid(root)) {
+      ++passages[static_cast<size_t>(root)].rooted;
+      if (tip != root) ++passages[static_cast<size_t>(root)].rooted_leaving;
+    }
+    for (int64_t row = grown.offsets[s]; row < grown.offsets[s + 1]; ++row) {
+      const int32_t c = point_cluster[static_cast<size_t>(row)];
+      if (!valid(c) || c == root || last_seen[static_cast<size_t>(c)] == s) continue;
+      last_seen[static_cast<size_t>(c)] = s;
+      ++passages[static_cast<size_t>(c)].passing_in;
+    }
+  }
+  return passages;
+}
+
 }  // namespace hair

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "hair/core/strand_set.h"
 #include "hair/geom/triangle_mesh_distance.h"
@@ -40,5 +41,18 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
                                    const std::vector<uint8_t>& scalp_triangle, double head_height_m,
                                    int64_t mesh_sample_count = 20000,
                                    const std::vector<int32_t>& hair_triangle_group = {});
+
+/// Per cluster of the input, where the grown strands that touch it come from and go:
+/// whether a cap's strands run on into the tail or bun its hair gathers into (a grown
+/// strand's points carry the cluster they run through, point attribute "cluster").
+struct ClusterPassage {
+  int64_t rooted = 0;         ///< strands rooted in the cluster
+  int64_t rooted_leaving = 0;  ///< of those, strands whose tip lies in another cluster
+  int64_t passing_in = 0;     ///< strands rooted in another cluster with points in this one
+};
+
+/// ClusterPassage of every cluster, from the strands' "cluster" strand attribute (the
+/// root's) and point attribute; `cluster_count` clusters (ids outside are ignored).
+std::vector<ClusterPassage> cluster_passages(const StrandSet& grown, int64_t cluster_count);
 
 }  // namespace hair

@@ -121,6 +121,24 @@ class GrowingContext {
       entries_.push_back({static_cast<int32_t>(s), true});
     }
     entry_index_ = std::make_unique<PointIndex>(entry_points);
+    all_index_ = std::make_unique<PointIndex>(strands.points);
+
+    // Groups that feed a continuation (a cap's cards whose tips meet the start of a tail
+    // after its band): a strand of theirs ends within continued_root_radius_h of the
+    // start of a strand of a cluster that does not start at the root.
+    group_feeds_continuation_.assign(group_strands_.size(), 0);
+    const double feed_m = params.continued_root_radius_h * h_;
+    for (int64_t s = 0; s < strand_count; ++s) {
+      const Vec3 tip = point_of(strands.points, strands.offsets[s + 1] - 1);
+      for (int32_t e : entry_index_->within(tip.cast<float>(), static_cast<float>(feed_m))) {
+        const StrandEntry& entry = entries_[static_cast<size_t>(e)];
+        if (entry.backward || cluster_starts_at_root(cluster_of_strand(entry.strand)) ||
+            group_of_strand(entry.strand) == group_of_strand(s))
+          continue;
+        group_feeds_continuation_[static_cast<size_t>(group_of_strand(s))] = 1;
+        break;
+      }
+    }
 
     // Heights above the body, for layers.
     if (params.layer_radius_h > 0) {
@@ -148,6 +166,9 @@ class GrowingContext {
     return input_.group_cluster[static_cast<size_t>(strand_group_[static_cast<size_t>(s)])];
   }
   int32_t group_of_strand(int64_t s) const { return strand_group_[static_cast<size_t>(s)]; }
+  int32_t cluster_of_group(int32_t group) const {
+    return input_.group_cluster[static_cast<size_t>(group)];
+  }
   bool cluster_starts_at_root(int32_t cluster) const {
     const auto& starts = input_.cluster_starts_at_root;
     return starts.empty() || starts.at(static_cast<size_t>(cluster)) != 0;
@@ -278,12 +299,16 @@ class GrowingContext {
     double radius_m = params_.continue_radius_h * h_;
     double search_m = std::max(radius_m, params_.continued_root_radius_h * h_);
     double min_cos = std::cos(params_.continue_max_angle_deg * std::numbers::pi / 180);
+    double min_cos_continued =
+        std::cos(params_.continued_root_max_angle_deg * std::numbers::pi / 180);
     std::optional<StrandEntry> best_same, best_other;
     double score_same = std::numeric_limits<double>::infinity(), score_other = score_same;
     for (int32_t e : entry_index_->within(point.cast<float>(), static_cast<float>(search_m))) {
       const StrandEntry& entry = entries_[static_cast<size_t>(e)];
-      // Beyond continue_radius_h only the start of a group that continues another.
-      double reach_m = !entry.backward && continues_another(entry.strand) ? search_m : radius_m;
+      // Beyond continue_radius_h, and turning by more than continue_max_angle_deg, only
+      // into the start of a group that continues another (a tail after its band).
+      const bool into_continuation = !entry.backward && continues_another(entry.strand);
+      double reach_m = into_continuation ? search_m : radius_m;
       if ((point_of(strands.points, entry.backward ? strands.offsets[entry.strand + 1] - 1
                                                    : strands.offsets[entry.strand]) -
            point)
@@ -302,7 +327,7 @@ class GrowingContext {
           entry.backward ? point_of(strands.points, last - 1) : point_of(strands.points, first + 1);
       Vec3 leaving = (next - start).normalized();
       double turn_cos = leaving.dot(direction);
-      if (turn_cos < min_cos) continue;
+      if (turn_cos < (into_continuation ? min_cos_continued : min_cos)) continue;
       // Not behind us by more than the radius allows, and not across the gap sideways.
       Vec3 gap = start - point;
       double score = gap.norm() / reach_m + (1 - turn_cos);
@@ -315,6 +340,41 @@ class GrowingContext {
       }
     }
     return best_same ? best_same : best_other;
+  }
+
+  /// Where a strand that ends with no strand to continue into (its card ends on the cap)
+  /// joins the cards feeding a continued cluster: the nearest point, within
+  /// continue_radius_h, of an input strand of a group that feeds a continuation (not yet
+  /// visited), running within continue_max_angle_deg of `direction`. Only hair that
+  /// continues into a cluster not starting at the root has such groups (a tail after its
+  /// band); elsewhere a strand ends where its card does.
+  std::optional<int32_t> joined_feeder(const Vec3& point, const Vec3& direction,
+                                       const std::vector<int32_t>& visited_groups) const {
+    const StrandSet& strands = input_.input_strands;
+    const double radius_m = params_.continue_radius_h * h_;
+    const double min_cos = std::cos(params_.continue_max_angle_deg * std::numbers::pi / 180);
+    std::optional<int32_t> best;
+    double best_score = std::numeric_limits<double>::infinity();
+    for (int32_t id : all_index_->within(point.cast<float>(), static_cast<float>(radius_m))) {
+      const auto row = static_cast<int64_t>(id);
+      const int32_t s = strand_of_point(row);
+      const int32_t group = group_of_strand(s);
+      if (!group_feeds_continuation_[static_cast<size_t>(group)] ||
+          std::find(visited_groups.begin(), visited_groups.end(), group) != visited_groups.end())
+        continue;
+      if (row + 1 >= strands.offsets[s + 1]) continue;  // a tip: next_entry's business
+      const Vec3 tangent =
+          (point_of(strands.points, row + 1) - point_of(strands.points, row)).normalized();
+      const double turn_cos = tangent.dot(direction);
+      if (turn_cos < min_cos) continue;
+      const double score =
+          (point_of(strands.points, row) - point).norm() / radius_m + (1 - turn_cos);
+      if (score < best_score) {
+        best_score = score;
+        best = group;
+      }
+    }
+    return best;
   }
 
   const GrowInput& input() const { return input_; }
@@ -334,6 +394,8 @@ class GrowingContext {
   std::vector<int32_t> point_strand_;
   std::vector<StrandEntry> entries_;
   std::unique_ptr<PointIndex> entry_index_;
+  std::unique_ptr<PointIndex> all_index_;  ///< every input point, by row
+  std::vector<uint8_t> group_feeds_continuation_;  ///< per group
   std::vector<double> length_to_tip_m_;
   std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
   std::vector<double> height_m_;                         ///< per input point, with layers
@@ -350,6 +412,7 @@ struct GrowingStrand {
   std::vector<int32_t> clusters, groups;  ///< per point, as GrowResult::point_cluster, _group
   int64_t pushed_out = 0;
   int64_t continued_same = 0, continued_other = 0;
+  int64_t joined = 0;  ///< times it joined the cards feeding a continuation (joined_feeder())
 };
 
 /// Grows one strand from `root`. `field` is its cluster's orientation field (null when the
@@ -477,7 +540,22 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
     // At the end of the field or of an input strand: the next strand, bridged to.
     std::optional<StrandEntry> entry =
         context.next_entry(point, direction, visited, cluster, group < 0 ? root_cluster : -1);
-    if (!entry) break;
+    if (!entry) {
+      // No strand starts here: where the hair continues into another cluster (a tail after
+      // its band), join the cards that feed it.
+      const std::optional<int32_t> joined =
+          params.join_continued_flow ? context.joined_feeder(point, direction, visited)
+                                     : std::nullopt;
+      if (!joined) break;
+      const int32_t joined_cluster = context.cluster_of_group(*joined);
+      (joined_cluster == cluster ? strand.continued_same : strand.continued_other) += 1;
+      group = *joined;
+      cluster = joined_cluster;
+      backward = false;
+      visited.push_back(group);
+      ++strand.joined;
+      continue;
+    }
     int32_t next_cluster = context.cluster_of_strand(entry->strand);
     (next_cluster == cluster ? strand.continued_same : strand.continued_other) += 1;
     group = context.group_of_strand(entry->strand);
@@ -616,6 +694,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     result.points_pushed_out += strand.pushed_out;
     result.continuations_same_cluster += strand.continued_same;
     result.continuations_other_cluster += strand.continued_other;
+    result.strands_joining_continued_flow += strand.joined > 0 ? 1 : 0;
   }
   result.strands = strand_set_from_polylines(polylines);
   result.strands.strand_attributes["cluster"] = root_cluster;

@@ -43,6 +43,18 @@ struct GrowParams {
   /// reach of cluster-all's connections (f1_max): typeify typed it root because nothing
   /// lay within its own reach before it, so the gap to it is wider than continue_radius_h.
   double continued_root_radius_h = 0.25;
+  /// ...and entered turning by up to this angle: hair gathered by a band turns there, the
+  /// strands from the sides of the head most (about a right angle on ponytail01, whose side
+  /// strands run back level and its tail hangs down).
+  double continued_root_max_angle_deg = 120;
+  /// Where the hair continues into a cluster that does not start at the root (a
+  /// ponytail's tail after its band; the lower part of some layered cuts), a strand whose
+  /// card ends before it (cards stacked on a cap end anywhere) joins the nearest card that
+  /// feeds it, running its way, within continue_radius_h and continue_max_angle_deg.
+  /// false: it ends where its card does. Off by default: on braid01 it sends 5,539
+  /// strands into the braid instead of 3,314, and the shipped classifier, trained on
+  /// strands grown without it, then calls the braid normal (issue 26 retrains).
+  bool join_continued_flow = false;
   /// A strand following an input strand's group is lost (and looks for the next group)
   /// farther than this from the group's rails.
   double follow_radius_h = 0.08;
@@ -109,6 +121,9 @@ struct GrowResult {
   int64_t points_pushed_out = 0;  ///< grown points moved out of the body
   int64_t continuations_same_cluster = 0;
   int64_t continuations_other_cluster = 0;
+  /// Strands whose card ended on the cap and that joined the cards feeding a cluster that
+  /// does not start at the root (GrowParams::join_continued_flow).
+  int64_t strands_joining_continued_flow = 0;
   bool roots_from_any_type = false;  ///< no root-type group: roots took any input strand
 };
 
@@ -122,6 +137,10 @@ struct GrowResult {
 ///     grown as long as the input strand nearest its root; then it follows the closest
 ///     input strand of the group it reaches, and at that strand's end the next input
 ///     strand that continues it (same cluster first, then the others), bridging gaps;
+///     where none does and the hair continues into a cluster that does not start at the
+///     root (groups whose cards end at its start: a ponytail's tail after its band), it
+///     joins the nearest card running its way that feeds it, so that such hair does not
+///     end on the cap;
 ///  4. no point enters the body: points are pushed out along the body's signed distance.
 /// Deterministic whatever the thread count.
 GrowResult grow_strands(const GrowInput& input, const GrowParams& params);

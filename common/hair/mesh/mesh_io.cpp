@@ -12,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "hair/core/error.h"
+#include "hair/mesh/mesh_container_checks.h"
 
 namespace hair {
 namespace {
@@ -126,6 +127,7 @@ PolyMesh read_with_assimp(const std::filesystem::path& path) {
   std::string extension = lowercase_extension(path);
   if (extension.empty() || !importer.IsExtensionSupported(extension))
     throw Error::bad_input(path.string(), "unsupported mesh format '" + extension + "'");
+  check_mesh_container(path);
   // No triangulation: quads are kept so their rails can be read (section 4.1).
   const aiScene* scene = importer.ReadFile(path.string(), aiProcess_PreTransformVertices);
   if (scene == nullptr)
