@@ -188,8 +188,9 @@ int main(int argc, char** argv) {
   app.add_option("--color-by", colouring,
                  "extract.h5: group (default), direction, rule, kind or flow (along the painted flow); clusters.h5: cluster "
                  "(default, the final clusters) or before_split (as spectral clustering found "
-                 "them); strands.h5: cluster (default), rule (how each segment was grown) or "
-                 "direction; frames.h5: style (default) or cluster. types.h5 is coloured by type, "
+                 "them); strands.h5: cluster (default: the cluster each point runs through), "
+                 "root_cluster (each strand whole by its root's), rule (how each segment was "
+                 "grown) or direction; frames.h5: style (default) or cluster. types.h5 is coloured by type, "
                  "middle.h5 by middle cluster (other "
                  "groups grey)");
   auto* labels_option = app.add_option(

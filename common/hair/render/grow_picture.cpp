@@ -23,9 +23,11 @@ const std::vector<cv::Vec3b>& rule_colours() {
 
 GrownColouring parse_grown_colouring(const std::string& word) {
   if (word == "cluster") return GrownColouring::cluster;
+  if (word == "root_cluster") return GrownColouring::root_cluster;
   if (word == "rule") return GrownColouring::rule;
   if (word == "direction") return GrownColouring::direction;
-  throw Error::usage("--color-by for strands.h5 is cluster, rule or direction, not '" + word + "'");
+  throw Error::usage("--color-by for strands.h5 is cluster, root_cluster, rule or direction, not '" +
+                     word + "'");
 }
 
 cv::Mat grown_picture(const h5::File& strands, const h5::File& extract,
@@ -38,6 +40,9 @@ cv::Mat grown_picture(const h5::File& strands, const h5::File& extract,
     case GrownColouring::cluster:
       colours =
           colours_by_point_id(std::get<std::vector<int32_t>>(set.point_attributes.at("cluster")));
+      break;
+    case GrownColouring::root_cluster:
+      colours = colours_by_id(set, std::get<std::vector<int32_t>>(set.strand_attributes.at("cluster")));
       break;
     case GrownColouring::direction:
       colours = colours_root_to_tip(set);

@@ -11,6 +11,7 @@ namespace hair {
 /// How a picture of strands.h5 colours the grown strands.
 enum class GrownColouring {
   cluster,   ///< by cluster, the palette of clusters_picture() (the same cluster, the same hue)
+  root_cluster,  ///< each whole strand by its root's cluster: where each cluster's hair goes
   rule,      ///< by how each segment was grown: field, input strand, bridge
   direction  ///< root (dark blue) to tip (yellow)
 };
