@@ -1,6 +1,7 @@
 #include "hair/h5/file.h"
 
 #include <optional>
+#include <set>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -115,6 +116,11 @@ bool File::has_checksummed_metadata() const {
 
 namespace {
 
+/// The error for metadata HDF5 cannot read at `where` (a checksum failed, say).
+Error unreadable_metadata(const std::string& file, const std::string& where) {
+  return Error::bad_dataset(file, where, with_hdf5_message("cannot read the file's metadata"));
+}
+
 /// Members of the group `group` that are groups or datasets (hard links only: soft and
 /// external links are not followed), as paths; nothing if HDF5 cannot list them.
 std::optional<std::vector<std::string>> hard_link_members(hid_t file, const std::string& group) {
@@ -137,10 +143,7 @@ std::optional<std::vector<std::string>> hard_link_members(hid_t file, const std:
 
 std::optional<Error> File::unchecked_metadata() const {
   H5F_info2_t file_info{};
-  const auto unreadable = [&](const std::string& where) {
-    return Error::bad_dataset(name_, where, with_hdf5_message("cannot read the file's metadata"));
-  };
-  if (H5Fget_info2(id(), &file_info) < 0) return unreadable("/");
+  if (H5Fget_info2(id(), &file_info) < 0) return unreadable_metadata(name_, "/");
   if (file_info.super.version < kChecksummedSuperblockVersion) {
     return Error::bad_input(
         name_, "written without metadata checksums (HDF5 superblock version " +
@@ -152,14 +155,17 @@ std::optional<Error> File::unchecked_metadata() const {
   // writes them: "dense" storage keeps them in fractal heap blocks without checksums.
   // Each group's storage is read from its header before its links are listed, so
   // nothing unchecked is followed on the way.
+  // Each object once, by its address: a hard link back to a group above would loop.
   std::vector<std::string> pending = {"/"};
+  std::set<haddr_t> seen;
   while (!pending.empty()) {
     const std::string path = pending.back();
     pending.pop_back();
     H5O_info_t info{};
     if (H5Oget_info_by_name2(id(), path.c_str(), &info, H5O_INFO_BASIC | H5O_INFO_META_SIZE,
                              H5P_DEFAULT) < 0)
-      return unreadable(path);
+      return unreadable_metadata(name_, path);
+    if (!seen.insert(info.addr).second) continue;
     const std::string unchecked =
         ", which HDF5 does not checksum (not written by this hairstyle): rerun the stage "
         "that wrote it";
@@ -168,11 +174,11 @@ std::optional<Error> File::unchecked_metadata() const {
     if (info.type != H5O_TYPE_GROUP) continue;
     H5G_info_t group{};
     if (H5Gget_info_by_name(id(), path.c_str(), &group, H5P_DEFAULT) < 0)
-      return unreadable(path);
+      return unreadable_metadata(name_, path);
     if (group.storage_type != H5G_STORAGE_TYPE_COMPACT && group.nlinks > 0)
       return Error::bad_dataset(name_, path, "links in dense storage" + unchecked);
     const std::optional<std::vector<std::string>> members = hard_link_members(id(), path);
-    if (!members) return unreadable(path);
+    if (!members) return unreadable_metadata(name_, path);
     pending.insert(pending.end(), members->begin(), members->end());
   }
   return std::nullopt;
@@ -182,9 +188,6 @@ ObjectKind File::kind_of(const std::string& path) const {
   // Component by component, so that a missing group on the way reads as missing. Where
   // HDF5 fails to read a group's links or an object's header (a checksum failed, say),
   // the file is corrupt: that is an error, not a missing object.
-  const auto unreadable = [&](const std::string& where) {
-    return Error::bad_dataset(name_, where, with_hdf5_message("cannot read the file's metadata"));
-  };
   const std::vector<std::string> components = path_components(path);
   std::string prefix;
   ObjectKind kind = ObjectKind::group;  // the root
@@ -192,10 +195,10 @@ ObjectKind File::kind_of(const std::string& path) const {
     if (kind != ObjectKind::group) return ObjectKind::missing;  // a path through a dataset
     prefix += "/" + component;
     const htri_t exists = H5Lexists(id(), prefix.c_str(), H5P_DEFAULT);
-    if (exists < 0) throw unreadable(prefix);
+    if (exists < 0) throw unreadable_metadata(name_, prefix);
     if (exists == 0) return ObjectKind::missing;
     const Handle object(H5Oopen(id(), prefix.c_str(), H5P_DEFAULT), H5Oclose);
-    if (!object.valid()) throw unreadable(prefix);
+    if (!object.valid()) throw unreadable_metadata(name_, prefix);
     switch (H5Iget_type(object.get())) {
       case H5I_GROUP:
         kind = ObjectKind::group;
@@ -209,7 +212,7 @@ ObjectKind File::kind_of(const std::string& path) const {
   }
   if (components.empty()) {
     const Handle root(H5Oopen(id(), "/", H5P_DEFAULT), H5Oclose);
-    if (!root.valid()) throw unreadable("/");
+    if (!root.valid()) throw unreadable_metadata(name_, "/");
   }
   return kind;
 }

@@ -161,6 +161,20 @@ TEST_F(H5Corruption, AFileWithoutMetadataChecksumsIsRefused) {
             "hairstyle writes version 3), not by this hairstyle: rerun the stage that wrote it");
 }
 
+TEST_F(H5Corruption, AHardLinkBackToAnAncestorIsWalkedOnce) {
+  // The walk that looks for unchecked storage visits each object once: a group linked
+  // into itself does not loop.
+  const fs::path path = directory_.path() / "loop.h5";
+  {
+    hair::h5::File file = hair::h5::File::create(path);
+    file.create_group("/a");
+    ASSERT_GE(H5Lcreate_hard(file.id(), "/", file.id(), "/a/loop", H5P_DEFAULT, H5P_DEFAULT), 0);
+    file.close();
+  }
+  const hair::h5::File file = hair::h5::File::open_read_only(path);
+  EXPECT_FALSE(file.unchecked_metadata().has_value());
+}
+
 TEST_F(H5Corruption, AFileKeepingAttributesOrLinksInDenseStorageIsRefused) {
   // The checksummed format, but with HDF5's default of at most 8 links or attributes
   // kept in an object's header: more go to fractal heap blocks without checksums, where
