@@ -85,7 +85,9 @@ class BodySdf {
   Eigen::Vector3d gradient(const Eigen::Vector3d& point_m) const;
 
   /// Moves `point_m` out along the gradient until distance() >= clearance_m, by Newton
-  /// steps aimed a hundredth of a voxel beyond the clearance (at most 16). A point where
+  /// steps aimed a hundredth of a voxel beyond the clearance (at most 16), each at most
+  /// twice as long as the distance still missing (where the gradient is weak, between
+  /// two close surfaces, Newton's step would throw the point far off). A point where
   /// the gradient vanishes (deeper inside than the band, outside the box) cannot be
   /// moved and stays where it is, and a clearance beyond band_m cannot be reached.
   /// Returns whether the point moved; check distance() afterwards where reaching the
