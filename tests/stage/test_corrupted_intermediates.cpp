@@ -15,7 +15,6 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
-#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -42,11 +41,6 @@ const fs::path kModel = fs::path(HAIR_SOURCE_DIR) / "models" / "style_extended.y
 int variant_count(int fallback) {
   const char* text = std::getenv("HAIR_CORRUPTED_VARIANTS");
   return text != nullptr ? std::max(1, std::atoi(text)) : fallback;
-}
-
-std::vector<uint8_t> file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 /// Variant `index` of `valid`: 1-3 bytes, each XORed with a non-zero byte, at positions
@@ -91,7 +85,7 @@ class CorruptedIntermediates : public ::testing::Test {
 
   /// Runs `reader` on variants 0 .. count-1 of braid01's extract.h5 and checks each run.
   static void expect_clean_runs(const Reader& reader) {
-    const std::vector<uint8_t> valid = file_bytes(braid().extract);
+    const std::vector<uint8_t> valid = hair::test::read_file_octets(braid().extract);
     const fs::path folder = directory() / ("runs_" + reader.program);
     const int count = variant_count(reader.default_variants);
     {

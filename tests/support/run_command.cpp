@@ -161,4 +161,9 @@ std::string read_file_bytes(const std::filesystem::path& path) {
   return content.str();
 }
 
+std::vector<uint8_t> read_file_octets(const std::filesystem::path& path) {
+  const std::string bytes = read_file_bytes(path);
+  return {bytes.begin(), bytes.end()};
+}
+
 }  // namespace hair::test

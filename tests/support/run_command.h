@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -49,5 +50,8 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
 
 /// The whole content of the file `path`; throws std::runtime_error if it cannot be read.
 std::string read_file_bytes(const std::filesystem::path& path);
+
+/// The same as bytes (for the readers and fuzz targets that take uint8_t data).
+std::vector<uint8_t> read_file_octets(const std::filesystem::path& path);
 
 }  // namespace hair::test

@@ -7,22 +7,16 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 #include "fuzz/fuzz_readers.h"
+#include "support/run_command.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 const fs::path kInputs = fs::path(HAIR_SOURCE_DIR) / "tests" / "fuzz" / "inputs";
-
-std::vector<uint8_t> file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 std::vector<fs::path> inputs_of(const std::string& target) {
   std::vector<fs::path> paths;
@@ -43,7 +37,7 @@ void expect_no_finding(const std::string& target, Finding finding, bool seeds_st
     ASSERT_FALSE(paths.empty()) << "no stored inputs for " << target;
   }
   for (const fs::path& path : paths) {
-    const std::vector<uint8_t> bytes = file_bytes(path);
+    const std::vector<uint8_t> bytes = hair::test::read_file_octets(path);
     EXPECT_EQ(finding(bytes.data(), bytes.size()), "") << path;
   }
 }
@@ -77,7 +71,7 @@ TEST(FuzzInputs, TheMeshSeedsAreReadWithTheirFaces) {
   }
   // The assimp seeds carry their format in their first byte (fuzz_readers.h).
   for (const char* name : {"quad.glb", "quad.gltf", "quad.ply", "triangle.fbx"}) {
-    const std::vector<uint8_t> bytes = file_bytes(kInputs / "assimp_mesh" / name);
+    const std::vector<uint8_t> bytes = hair::test::read_file_octets(kInputs / "assimp_mesh" / name);
     const fs::path path = hair::fuzz::write_input(name, bytes.data() + 1, bytes.size() - 1);
     const hair::PolyMesh mesh = hair::read_mesh(path);
     EXPECT_GE(mesh.face_count(), 1) << name;
@@ -86,7 +80,7 @@ TEST(FuzzInputs, TheMeshSeedsAreReadWithTheirFaces) {
 }
 
 TEST(FuzzInputs, TheTextureSeedIsPaintedAlongItsStrokes) {
-  const std::vector<uint8_t> bytes = file_bytes(kInputs / "texture" / "strokes_16.png");
+  const std::vector<uint8_t> bytes = hair::test::read_file_octets(kInputs / "texture" / "strokes_16.png");
   const hair::PolyMesh mesh = hair::fuzz::textured_quads();
   std::vector<hair::MeshMaterial> materials = mesh.materials;
   materials[0].diffuse.path = "strokes_16.png";

@@ -9,12 +9,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <random>
 #include <vector>
 
 #include "unit/file_test.h"
 #include "fuzz/fuzz_readers.h"
+#include "support/run_command.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/schema.h"
@@ -26,11 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 using hair::Error;
 using hair::ErrorKind;
-
-std::vector<uint8_t> file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void write_bytes(const fs::path& path, const std::vector<uint8_t>& bytes, size_t size) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -109,7 +104,7 @@ TEST_F(H5Corruption, LinksAndAttributesStayInTheObjectHeadersHoweverMany) {
 }
 
 TEST_F(H5Corruption, ByteFlippedFilesAreReadOrRefusedNeverTrustedWrong) {
-  const std::vector<uint8_t> valid = file_bytes(valid_extract());
+  const std::vector<uint8_t> valid = hair::test::read_file_octets(valid_extract());
   std::mt19937_64 random(30);  // fixed: the same 400 variants on every run
   int refused = 0, read_back = 0;
   const fs::path variant = directory_.path() / "variant.h5";
@@ -135,7 +130,7 @@ TEST_F(H5Corruption, ByteFlippedFilesAreReadOrRefusedNeverTrustedWrong) {
 }
 
 TEST_F(H5Corruption, AFileCutAtAnyByteIsRefusedByName) {
-  const std::vector<uint8_t> valid = file_bytes(valid_extract());
+  const std::vector<uint8_t> valid = hair::test::read_file_octets(valid_extract());
   const fs::path cut = directory_.path() / "cut.h5";
   for (size_t size = 0; size < valid.size(); size += (size < 4096 ? 1 : 7)) {
     write_bytes(cut, valid, size);
