@@ -139,9 +139,7 @@ for name in "${names[@]}"; do
       echo "| $name | x1 | $(row "${default_figures[$name]}") |"
       continue
     fi
-    figures=$(run "$name" "$work/stiff.h5" --motion shake --duration_s 6 \
-      --edge_stiffness_per_kg "$((4000000 * scale))" --bend_stiffness_per_kg "$((4000000 * scale))" \
-      --torsion_stiffness_per_kg "$((2000000 * scale))" --altitude_stiffness_per_kg "$((4000000 * scale))")
+    figures=$(run "$name" "$work/stiff.h5" --motion shake --duration_s 6 --stiffness_scale "$scale")
     echo "| $name | x$scale | $(row "$figures") |"
   done
 done

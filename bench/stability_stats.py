@@ -55,9 +55,12 @@ def main():
     for g in range(len(offsets) - 1):
         points = rest[offsets[g]:offsets[g + 1]]
         length += mass_scale[g] * np.linalg.norm(np.diff(points, axis=0), axis=1).sum()
-    mass = length * parameters["mass_per_length_kg_m"]
-    # The springs' deformation as a length, whatever their stiffness: sqrt(2 E / (k M)).
-    deformation = np.sqrt(2 * float(elastic.max()) / (parameters["edge_stiffness_per_kg"] * mass))
+    fibre_mass_per_length = parameters["hair_density_kg_m3"] * np.pi * parameters["hair_radius_m"] ** 2
+    mass = length * parameters["fibres_per_guide"] * fibre_mass_per_length
+    # The springs' deformation as a length, whatever their stiffness: sqrt(2 E / (k M)),
+    # k the hair segments' stiffness per kilogram, (2 pi f)^2 times the stiffness scale.
+    per_kg = (2 * np.pi * parameters["stretch_frequency_hz"]) ** 2 * parameters["stiffness_scale"]
+    deformation = np.sqrt(2 * float(elastic.max()) / (per_kg * mass))
     deformation_h = deformation / head_height
     total = kinetic + elastic + gravity
     finite = finite and bool(np.isfinite(total).all())

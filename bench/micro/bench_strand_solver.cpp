@@ -9,6 +9,7 @@
 #include "hair/sim/altitude_strand.h"
 #include "hair/sim/banded_cholesky.h"
 #include "hair/sim/strand_dynamics.h"
+#include "hair/sim/strand_stiffness.h"
 
 extern "C" void dpbsv_(const char* uplo, const int* n, const int* kd, const int* nrhs, double* ab,
                        const int* ldab, double* b, const int* ldb, int* info);
@@ -20,7 +21,7 @@ using Vec3 = Eigen::Vector3d;
 hair::AltitudeStrand long_strand() {
   std::vector<Vec3> points;
   for (int i = 0; i < 30; ++i) points.emplace_back(0.01 * i, -0.024 * i, 0.003 * i);
-  return hair::build_altitude_strand(points, 1e-3);
+  return hair::build_hair_strand(points, hair::StrandStiffness(hair::StrandMaterial{}));
 }
 
 /// The band matrix and right-hand side of one step of the strand, captured by solving it.

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -36,27 +37,45 @@ std::pair<double, double> closest_segment_parameters(const Vec3& a, const Vec3& 
 
 /// The ghost beside the segment (from, to) that makes the worst of the tetrahedra it
 /// closes, (p2, p1, p0, ghost) and (p1, p0, ghost, to), best; p0 is the last particle
-/// (`from`), p1 and p2 the ones before it (absent for the ghost after the root).
-Vec3 place_ghost(const std::vector<Vec3>& sequence, const Vec3& to, double offset) {
+/// (`from`), p1 and p2 the ones before it (absent for the ghost after the root). Of
+/// twelve angles about the segment; ties go to a quarter turn on from the last ghost.
+Vec3 place_ghost(const std::vector<Vec3>& sequence, const std::vector<uint8_t>& is_ghost,
+                 const Vec3& to, double offset) {
   const Vec3& from = sequence.back();
   Vec3 axis = to - from;
   double length = axis.norm();
   axis /= length;
-  // Two directions perpendicular to the segment, fixed by the segment alone.
-  Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  Vec3 u = axis.cross(helper).normalized();
-  Vec3 v = axis.cross(u);
-  Vec3 middle = 0.5 * (from + to);
-  size_t n = sequence.size();
-  Vec3 best = middle + offset * length * u;
-  double best_score = -1;
+  const size_t n = sequence.size();
+  // Angles are measured from the last ghost's direction off its segment, carried onto
+  // this segment, so that where the quality ties (straight hair) each ghost turns a
+  // quarter on from the last: a chain that bends alike every way. Without one, from a
+  // direction the segment alone fixes.
+  Vec3 u = Vec3::Zero();
+  for (size_t back = 1; back <= 3 && back < n; ++back) {
+    const size_t g = n - back;
+    if (!is_ghost[g] || g == 0 || g + 1 >= n) continue;
+    const Vec3 radial = sequence[g] - 0.5 * (sequence[g - 1] + sequence[g + 1]);
+    u = radial - radial.dot(axis) * axis;
+    break;
+  }
+  if (!(u.norm() > 1e-9 * length)) {
+    const Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    u = axis.cross(helper);
+  }
+  u.normalize();
+  const Vec3 v = axis.cross(u);
+  const Vec3 middle = 0.5 * (from + to);
+  Vec3 best = middle + offset * length * v;
+  double best_score = -std::numeric_limits<double>::infinity();
   for (int k = 0; k < 12; ++k) {
-    double angle = k * std::numbers::pi / 6;
-    Vec3 ghost = middle + offset * length * (std::cos(angle) * u + std::sin(angle) * v);
+    const double angle = k * std::numbers::pi / 6;
+    const Vec3 ghost = middle + offset * length * (std::cos(angle) * u + std::sin(angle) * v);
     double score = 1;
     if (n >= 3) score = tetrahedron_quality(sequence[n - 3], sequence[n - 2], from, ghost);
     if (n >= 2) score = std::min(score, tetrahedron_quality(sequence[n - 2], from, ghost, to));
-    if (score > best_score + 1e-12) {
+    // Ties go to the quarter turn on.
+    score -= 1e-9 * std::abs(angle - std::numbers::pi / 2);
+    if (score > best_score) {
       best_score = score;
       best = ghost;
     }
@@ -75,7 +94,7 @@ double tetrahedron_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
   return 6 * std::numbers::sqrt2 * volume / (rms * rms * rms);
 }
 
-int most_robust_altitude(const std::array<Vec3, 4>& x) {
+int most_robust_altitude(const std::array<Vec3, 4>& x, int preferred, double margin) {
   // The six edges once; each size is then the cross product kOppositeFace or kEdgePair
   // names (e.g. face 0, corners 1 2 3: (x2 - x1) x (x3 - x1)).
   const Vec3 e01 = x[1] - x[0], e02 = x[2] - x[0], e03 = x[3] - x[0];
@@ -92,6 +111,9 @@ int most_robust_altitude(const std::array<Vec3, 4>& x) {
       best = which;
     }
   }
+  if (preferred >= 0 && best >= 0 &&
+      size[static_cast<size_t>(preferred)] * margin * margin >= best_size)
+    return preferred;
   return best;
 }
 
@@ -155,30 +177,41 @@ AltitudeStrand build_altitude_strand(const std::vector<Vec3>& hair_points_m,
           tetrahedron_quality(strand.rest_m[n - 3], strand.rest_m[n - 2], strand.rest_m[n - 1],
                               next) < options.min_tetrahedron_quality;
     }
-    if (needs_ghost) add(place_ghost(strand.rest_m, next, options.ghost_offset), true);
+    if (needs_ghost) add(place_ghost(strand.rest_m, strand.is_ghost, next, options.ghost_offset), true);
     add(next, false);
   }
   strand.kinematic_count = 2;  // the root and its ghost
+  if (options.clamped_root) {
+    // The ghost before the root: beside the first segment, a quarter turn about it from
+    // the ghost after the root, so that the three held particles fix the root's frame.
+    const Vec3 root = strand.rest_m[0], first = hair_points_m[1];
+    const Vec3 middle = 0.5 * (root + first);
+    const Vec3 axis = (first - root).normalized();
+    const Vec3 leading = middle + axis.cross(strand.rest_m[1] - middle);
+    strand.rest_m.insert(strand.rest_m.begin(), leading);
+    strand.is_ghost.insert(strand.is_ghost.begin(), 1);
+    for (int32_t& q : strand.hair_particle) ++q;
+    strand.kinematic_count = 3;
+  }
 
-  // Masses: hair particles by the length they stand for, ghosts by their neighbours.
+  // Masses: each hair segment's, shared by its hair particles and its ghost.
   int32_t count = strand.particle_count();
   strand.mass_kg.assign(static_cast<size_t>(count), 0.0);
   for (int32_t i = 0; i + 1 < strand.hair_count(); ++i) {
     double length =
         (hair_points_m[static_cast<size_t>(i) + 1] - hair_points_m[static_cast<size_t>(i)]).norm();
     strand.hair_segment_m.push_back(length);
-    strand.mass_kg[static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i)])] +=
-        0.5 * length * mass_per_length_kg_m;
-    strand.mass_kg[static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i) + 1])] +=
-        0.5 * length * mass_per_length_kg_m;
+    auto inner = static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i)]);
+    auto outer = static_cast<size_t>(strand.hair_particle[static_cast<size_t>(i) + 1]);
+    double mass = length * mass_per_length_kg_m;
+    if (outer - inner == 2) {  // a ghost between them
+      strand.mass_kg[inner + 1] += options.ghost_mass_share * mass;
+      mass *= 1 - options.ghost_mass_share;
+    }
+    strand.mass_kg[inner] += 0.5 * mass;
+    strand.mass_kg[outer] += 0.5 * mass;
   }
-  for (int32_t q = 0; q < count; ++q) {
-    auto k = static_cast<size_t>(q);
-    if (strand.is_ghost[k])  // a ghost always lies between two hair particles
-      strand.mass_kg[k] =
-          options.ghost_mass_ratio * 0.5 * (strand.mass_kg[k - 1] + strand.mass_kg[k + 1]);
-  }
-
+  if (options.clamped_root) strand.mass_kg[0] = strand.mass_kg[2];  // held: any positive mass
   // Springs along the sequence, and the tetrahedra.
   for (int32_t q = 0; q < count; ++q) {
     for (int32_t reach = 1; reach <= 3 && q + reach < count; ++reach) {
@@ -194,6 +227,9 @@ AltitudeStrand build_altitude_strand(const std::vector<Vec3>& hair_points_m,
       bool hair_segment = reach == 2 && !strand.is_ghost[static_cast<size_t>(q)] &&
                           strand.is_ghost[static_cast<size_t>(q + 1)] &&
                           !strand.is_ghost[static_cast<size_t>(q + 2)];
+      hair_segment = hair_segment || (reach == 1 && !strand.is_ghost[static_cast<size_t>(q)] &&
+                                      !strand.is_ghost[static_cast<size_t>(q + 1)]);
+      spring.hair_segment = hair_segment;
       spring.kind = hair_segment ? SpringKind::edge : static_cast<SpringKind>(reach - 1);
       strand.springs.push_back(spring);
     }
@@ -208,6 +244,7 @@ AltitudeStrand build_altitude_strand(const std::vector<Vec3>& hair_points_m,
     for (int which = 0; which < 7; ++which)
       tetrahedron.rest_altitude_m[static_cast<size_t>(which)] =
           tetrahedron_altitude(corners, which).length_m;
+    tetrahedron.rest_altitude = static_cast<int8_t>(most_robust_altitude(corners));
     strand.tetrahedra.push_back(tetrahedron);
   }
   return strand;

@@ -22,6 +22,9 @@ struct TwoParticleSpring {
   int32_t a = 0, b = 0;
   double rest_length_m = 0;
   SpringKind kind = SpringKind::edge;
+  bool hair_segment = false;  ///< the hair between two hair particles (an edge)
+  double stiffness_n_m = 0;   ///< set by StrandStiffness::assign() (strand_stiffness.h)
+  double damping_n_s_m = 0;
 };
 
 /// A tetrahedron (q_k, q_k+1, q_k+2, q_k+3) of the chain, with the rest lengths of its
@@ -31,6 +34,12 @@ struct TwoParticleSpring {
 struct ChainTetrahedron {
   std::array<int32_t, 4> particle{};
   std::array<double, 7> rest_altitude_m{};
+  /// The most robust altitude at rest: kept while no other is 10% more robust, so that
+  /// two nearly equal ones do not take turns from step to step (a chatter that never
+  /// comes to rest).
+  int8_t rest_altitude = -1;
+  double stiffness_n_m = 0;  ///< of its altitude spring, set by StrandStiffness::assign()
+  double damping_n_s_m = 0;
 };
 
 /// Options of build_altitude_strand().
@@ -41,13 +50,21 @@ struct AltitudeStrandOptions {
   double min_tetrahedron_quality = 0.15;
   /// A ghost sits beside the middle of its hair segment, this many segment lengths off it.
   double ghost_offset = 0.5;
-  /// Mass of a ghost particle, as a fraction of the mean of its two hair neighbours'.
-  double ghost_mass_ratio = 0.5;
+  /// Share of its hair segment's mass that a ghost particle takes (the segment's two hair
+  /// particles share the rest), so the strand weighs what its hair does.
+  double ghost_mass_share = 1.0 / 3.0;
+  /// The root is clamped: a second ghost goes before the root in the sequence, beside the
+  /// first segment a quarter turn from the ghost after the root, and all three are
+  /// kinematic. (The root and one ghost alone leave the strand free to turn about the
+  /// line through them: a hinge, not a follicle.) false: no leading ghost, and the root
+  /// and its ghost are kinematic (a wisp's centre, which hangs from anchors, sets none).
+  bool clamped_root = true;
 };
 
 /// The particles and springs of one strand. Hair particle i is sequence particle
 /// hair_particle[i]; the others are ghosts. The first `kinematic_count` particles of the
-/// sequence (the root and the ghost after it) are not simulated: they move with the head.
+/// sequence (the ghost before the root, the root and the ghost after it) are not
+/// simulated: they move with the head.
 struct AltitudeStrand {
   std::vector<Eigen::Vector3d> rest_m;  ///< rest positions of the sequence, hair and ghosts
   std::vector<double> mass_kg;          ///< per sequence particle
@@ -58,6 +75,9 @@ struct AltitudeStrand {
   std::vector<ChainTetrahedron> tetrahedra;
   /// Rest lengths of the hair segments (hair particle i to i + 1), for strain limiting.
   std::vector<double> hair_segment_m;
+  /// Per sequence particle, the force that holds it up at rest (sag_free_rest.h), in the
+  /// frame of the head's rest pose: it turns with the head. Empty: none.
+  std::vector<Eigen::Vector3d> rest_support_n;
 
   int32_t particle_count() const { return static_cast<int32_t>(rest_m.size()); }
   int32_t hair_count() const { return static_cast<int32_t>(hair_particle.size()); }
@@ -66,11 +86,14 @@ struct AltitudeStrand {
 };
 
 /// Builds the strand of the hair particles `hair_points_m` (root first, at least two,
-/// no two consecutive ones closer than 1e-9 m). Every hair particle weighs
-/// `mass_per_length_kg_m` times half the length of its segments. A ghost always follows
+/// no two consecutive ones closer than 1e-9 m), its springs without their constants
+/// (StrandStiffness::assign() in strand_stiffness.h gives them). Each hair segment
+/// weighs `mass_per_length_kg_m` times its length, shared by its two hair particles and
+/// its ghost if it has one (`ghost_mass_share`). A ghost always follows
 /// the root, so that the root's direction is held by the head; the root and that ghost
 /// are kinematic. Further ghosts go where the chain's tetrahedra would be flat (straight
-/// or gently curved hair); curly hair needs few.
+/// or gently curved hair); curly hair needs few. With `clamped_root`, a ghost before the
+/// root too (the three kinematic).
 ///
 /// Ghost placement: beside the middle of the segment it splits, at the angle about the
 /// segment (of twelve) that makes the worst of the two new tetrahedra best.
@@ -98,7 +121,9 @@ struct Altitude {
 
 /// Which of the seven altitudes of (x0, x1, x2, x3) has the largest robustness_m2: the
 /// one Selle et al. use. Cheaper than computing all seven with tetrahedron_altitude().
-int most_robust_altitude(const std::array<Eigen::Vector3d, 4>& x);
+/// With `preferred` (0..6), that one unless another is more than `margin` times as robust.
+int most_robust_altitude(const std::array<Eigen::Vector3d, 4>& x, int preferred = -1,
+                         double margin = 1.1);
 
 /// Altitude `which` (0..6, as ChainTetrahedron::rest_altitude_m) of (x0, x1, x2, x3).
 /// Point-face altitudes weigh the face's corners by the barycentric coordinates of the

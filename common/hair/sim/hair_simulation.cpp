@@ -27,9 +27,19 @@ void check_params(const SimulationParams& p) {
   require(p.segment_length_h > 0, "segment_length_h must be positive");
   require(p.short_segment_factor > 0 && p.wisp_segment_factor > 0,
           "segment factors must be positive");
-  require(p.mass_per_length_kg_m > 0, "mass_per_length_kg_m must be positive");
+  const HairFibre& fibre = p.material.fibre;
+  require(fibre.youngs_modulus_pa > 0 && fibre.shear_modulus_pa > 0,
+          "youngs_modulus_pa and shear_modulus_pa must be positive");
+  require(fibre.radius_m > 0 && fibre.density_kg_m3 > 0,
+          "hair_radius_m and hair_density_kg_m3 must be positive");
+  require(p.material.fibres_per_strand >= 1, "fibres_per_guide must be at least 1");
+  require(p.material.lock_cohesion >= 0 && p.material.lock_cohesion <= 1,
+          "lock_cohesion must be within 0 and 1");
+  require(p.material.stiffness_scale > 0, "stiffness_scale must be positive");
+  require(p.material.stretch_frequency_hz > 0, "stretch_frequency_hz must be positive");
   require(p.body_voxel_h > 0 && p.body_clearance_h >= 0, "body field spacing must be positive");
   require(p.density_cell_h > 0, "density_cell_h must be positive");
+  require(p.bundle_cohesion_per_s2 >= 0, "bundle_cohesion_per_s2 must be 0 or positive");
   require(p.repulsion_interval_frames >= 1, "repulsion_interval_frames must be at least 1");
 }
 
@@ -62,8 +72,10 @@ SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& m
   const std::optional<BodySdf> body =
       body_field_over_hair(scene, result.simulated_style, params);
   const WispCentres centres = plan_simulation(scene, params, body, result);
-  std::vector<RunningStrand> running = build_strand_guides(scene, params, result);
-  build_wisps(scene, params, centres, result, running);
+  const StrandStiffness stiffness(params.material);
+  std::vector<RunningStrand> running = build_strand_guides(scene, params, stiffness, body, result);
+  build_wisps(scene, stiffness, centres, result, running);
+  if (params.sag_free) make_rests_sag_free(params, motion, scene.source, running);
 
   // Frame 0, then the frames.
   SimulationLoop loop(scene, motion, params, body, std::move(running), result);

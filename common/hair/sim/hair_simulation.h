@@ -32,8 +32,16 @@ struct SimulationParams {
   double wisp_segment_factor = 1;      ///< a wisp's centre strand: segments this many times longer
   double wisp_gather_radius_h = 0.15;  ///< a braid's strands are a bundle where their mean
                                        ///< distance from their mean point is within this
-  double mass_per_length_kg_m = 1e-3;  ///< of a guide (it stands for a lock of hair)
+  /// The hair (a fibre's moduli, radius and density; fibres per guide) and how it moves.
   StrandMaterial material;
+  /// Each simulated strand's groom is made its rest under gravity with the head still
+  /// (sag_free_rest.h: tension along the hair, a support force fixed in the head's frame
+  /// for the rest); false: the groom is the springs' rest shape, and the hair sags from it.
+  bool sag_free = true;
+  /// Tails hold together: a hair particle of a guide hanging from a band is drawn back
+  /// towards its bundle's centre line where it strays farther from it than at rest, with
+  /// this stiffness per kilogram (1/s^2; 0: off). See bundle_cohesion.h.
+  double bundle_cohesion_per_s2 = 1600;
   double gravity_m_s2 = 9.81;       ///< along -Y
   double body_clearance_h = 0.004;  ///< hair particles are kept this far outside the body
                                     ///< (as grow keeps the grown points)

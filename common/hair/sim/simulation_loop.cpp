@@ -32,8 +32,13 @@ SimulationLoop::SimulationLoop(const SimulationScene& scene, const HeadMotion& m
       density_(params.density_cell_h * scene.head_height_m),
       rest_density_(params.density_cell_h * scene.head_height_m),
       steppers_(static_cast<size_t>(omp_get_max_threads())),
+      cohesion_(result.guides, running_, params.bundle_cohesion_per_s2),
       shares_(running_.size()),
-      spring_j_(running_.size()) {}
+      spring_j_(running_.size()) {
+  if (cohesion_.active())
+    spdlog::info("{}: {} tails hold together ({} guides)", scene.source, cohesion_.bundle_count(),
+                 cohesion_.guide_count());
+}
 
 void SimulationLoop::start() {
   for (size_t g = 0; g < running_.size(); ++g) {
@@ -49,6 +54,9 @@ void SimulationLoop::start() {
   result_.guide_points_m.assign(static_cast<size_t>(result_.frame_count) * hair_points_ * 3, 0.0f);
   result_.wisp_frames.assign(
       static_cast<size_t>(result_.frame_count) * static_cast<size_t>(tetrahedra_) * 7, 0.0f);
+
+  cohesion_m_s2_.assign(running_.size(), {});
+  applied_m_s2_.assign(running_.size(), {});
 
   // Start: the rest shape where the head is at time 0, at rest.
   RigidTransform head = motion_.at(0);
@@ -122,6 +130,9 @@ void SimulationLoop::integrate_frame(int32_t frame, const RigidTransform& pose) 
       gather_hair();
       density_.build(hair_positions_);
     }
+    // The tails' cohesion from the positions at the start of each step (explicit: held
+    // over a frame, a stiff one would not be stable).
+    if (cohesion_.active()) cohesion_.accelerations(running_, cohesion_m_s2_);
     // A few guides are not worth a thread team's barrier per step (on a busy machine a
     // barrier can wait out another process's time slice).
 #pragma omp parallel for schedule(dynamic, 4) if (running_.size() >= 32)
@@ -165,8 +176,17 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
     }
     BodyCollider collider(*body_, from, to, clearance_m_, dt_s_);
     StrandStepper& stepper = steppers_[static_cast<size_t>(omp_get_thread_num())];
-    stepper.step(model, params_.material, strand.acceleration_m_s2, gravity_, strand.anchors, dt_s_,
-                 strand.state, params_.body_collisions ? &collider : nullptr, params_.friction);
+    const Eigen::Matrix3d head_rotation = to.rotation.toRotationMatrix();
+    const std::vector<Vec3>* acceleration = &strand.acceleration_m_s2;
+    if (cohesion_.member(g)) {
+      std::vector<Vec3>& applied = applied_m_s2_[g];
+      applied = strand.acceleration_m_s2;
+      for (size_t k = 0; k < applied.size(); ++k) applied[k] += cohesion_m_s2_[g][k];
+      acceleration = &applied;
+    }
+    stepper.step(model, params_.material, *acceleration, gravity_, strand.anchors, dt_s_,
+                 strand.state, params_.body_collisions ? &collider : nullptr, params_.friction,
+                 &head_rotation);
     if (step == 0) spring_j_[g] = stepper.start_spring_energy_j();
     strand.penetration_m = std::max(strand.penetration_m, collider.deepest_m());
     for (int32_t q = 0; q < model.kinematic_count; ++q) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hair/geom/body_sdf.h"
+#include "hair/sim/bundle_cohesion.h"
 #include "hair/sim/hair_density_field.h"
 #include "hair/sim/hair_simulation.h"
 #include "hair/sim/simulation_setup.h"
@@ -78,6 +79,10 @@ class SimulationLoop {
   double reference_density_ = 0;
   std::vector<Eigen::Vector3d> hair_positions_;
   std::vector<StrandStepper> steppers_;  ///< one per thread
+  BundleCohesion cohesion_;              ///< tails that hold together
+  /// Per strand: the cohesion's accelerations (worked out at each frame's start), and what
+  /// a step applies (repulsion and cohesion summed).
+  std::vector<std::vector<Eigen::Vector3d>> cohesion_m_s2_, applied_m_s2_;
   RigidTransform previous_;              ///< the head at the last step's end
   std::vector<StrandShare> shares_;
   std::vector<double> spring_j_;

@@ -27,18 +27,32 @@ void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
              "a braid's strands form its wisp where their mean distance from their mean point "
              "is within this, in H",
              ParamRange::above(0));
-  params.add("mass_per_length_kg_m", p.mass_per_length_kg_m,
-             "mass of a guide per metre (it stands for a lock of hair), kg/m",
+  params.add("youngs_modulus_pa", m.fibre.youngs_modulus_pa,
+             "a hair's Young's modulus, Pa (Robbins 2012: 3.89 GPa)", ParamRange::above(0));
+  params.add("shear_modulus_pa", m.fibre.shear_modulus_pa,
+             "a hair's shear (torsional) modulus, Pa (Robbins 2012: 0.89 GPa)",
              ParamRange::above(0));
-  params.add("edge_stiffness_per_kg", m.edge_stiffness_per_kg,
-             "stretch springs, stiffness per kg of their particles (1/s^2)",
-             ParamRange::at_least(0));
-  params.add("bend_stiffness_per_kg", m.bend_stiffness_per_kg,
-             "bending springs (particle k to k + 2), per kg (1/s^2)", ParamRange::at_least(0));
-  params.add("torsion_stiffness_per_kg", m.torsion_stiffness_per_kg,
-             "torsion springs (particle k to k + 3), per kg (1/s^2)", ParamRange::at_least(0));
-  params.add("altitude_stiffness_per_kg", m.altitude_stiffness_per_kg,
-             "altitude springs (one per tetrahedron), per kg (1/s^2)", ParamRange::at_least(0));
+  params.add("hair_radius_m", m.fibre.radius_m, "a hair's radius, m (35 um: 70 um across)",
+             ParamRange::closed(1e-6, 1e-3));
+  params.add("hair_density_kg_m3", m.fibre.density_kg_m3,
+             "a hair's density, kg/m^3 (Robbins 2012: 1320)", ParamRange::closed(100, 10000));
+  params.add("fibres_per_guide", m.fibres_per_strand,
+             "hairs a guide strand stands for (its mass and rigidities scale with it)",
+             ParamRange::closed(1, 1e7));
+  params.add("lock_cohesion", m.lock_cohesion,
+             "how a lock's hairs hold together in bending: 0 free to slide (N E I), 1 bonded "
+             "(N^2 E I)",
+             ParamRange::closed(0, 1));
+  params.add("stretch_frequency_hz", m.stretch_frequency_hz,
+             "the hair segments' springs vibrate at this (numerical: the strain limit keeps "
+             "the hair's length)",
+             ParamRange::closed(1, 1e6));
+  params.add("stiffness_scale", m.stiffness_scale,
+             "expert override: every spring constant times this (1: the hair's own)",
+             ParamRange::closed(1e-6, 1e6));
+  params.add("sag_free", p.sag_free,
+             "make the groom the rest under gravity (tension along the hair, a support fixed "
+             "in the head's frame for the rest; --sag_free=false: the groom sags)");
   params.add("anchor_stiffness_per_kg", m.anchor_stiffness_per_kg,
              "springs from a braid's wisp to the strand ends it hangs from, per kg (1/s^2)",
              ParamRange::at_least(0));
@@ -48,6 +62,10 @@ void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
              ParamRange::closed(0, 1000));
   params.add("max_stretch", m.max_stretch, "hair segments are kept within this strain",
              ParamRange::closed(0, 1));
+  params.add("bundle_cohesion_per_s2", p.bundle_cohesion_per_s2,
+             "tails hold together: a guide hanging from a band is drawn back towards its "
+             "bundle's centre line beyond its rest distance, per kg (1/s^2; 0: off)",
+             ParamRange::closed(0, 1e6));
   params.add("gravity_m_s2", p.gravity_m_s2, "gravity along -Y, m/s^2",
              ParamRange::closed(0, 1000));
   params.add("body_clearance_h", p.body_clearance_h,

@@ -8,12 +8,24 @@
 #include <string>
 
 #include "hair/core/error.h"
+#include "hair/sim/body_collider.h"
+#include "hair/sim/sag_free_rest.h"
 #include "hair/sim/wisp_gathering.h"
 
 namespace hair {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
+
+/// Moves each point after the first that is closer to the body than `clearance_m` out
+/// to it along the field's gradient.
+void keep_clear_of_body(const BodySdf& body, double clearance_m, std::vector<Vec3>& points) {
+  for (size_t i = 1; i < points.size(); ++i) {
+    if (body.certainly_farther_than(points[i], clearance_m)) continue;
+    const double distance = body.distance(points[i]);
+    if (distance < clearance_m) push_out_along_gradient(body, points[i], distance, clearance_m);
+  }
+}
 
 /// The polyline `points` resampled to `segments` equal arcs, both ends kept.
 std::vector<Vec3> resample_polyline(const std::vector<Vec3>& points, int segments) {
@@ -243,8 +255,11 @@ WispCentres plan_simulation(const SimulationScene& scene, const SimulationParams
 
 std::vector<RunningStrand> build_strand_guides(const SimulationScene& scene,
                                                const SimulationParams& params,
+                                               const StrandStiffness& stiffness,
+                                               const std::optional<BodySdf>& body,
                                                SimulationResult& result) {
   const double h = scene.head_height_m;
+  const double clearance_m = params.body_clearance_h * h;
   const StrandSet& strands = scene.strands;
   std::vector<RunningStrand> running;
   for (const GuideStrand& guide : result.plan.guides) {
@@ -263,8 +278,9 @@ std::vector<RunningStrand> build_strand_guides(const SimulationScene& scene,
     simulated.cluster = guide.cluster;
     simulated.style = guide.style;
     simulated.rest_m = resample_polyline(polyline, segments_for(length, spacing));
+    if (body && params.body_collisions) keep_clear_of_body(*body, clearance_m, simulated.rest_m);
     RunningStrand strand;
-    strand.model = build_altitude_strand(simulated.rest_m, params.mass_per_length_kg_m);
+    strand.model = build_hair_strand(simulated.rest_m, stiffness);
     simulated.ghost_count = strand.model.ghost_count();
     result.guides.push_back(std::move(simulated));
     running.push_back(std::move(strand));
@@ -272,8 +288,7 @@ std::vector<RunningStrand> build_strand_guides(const SimulationScene& scene,
   return running;
 }
 
-void build_wisps(const SimulationScene& scene, const SimulationParams& params,
-                 const WispCentres& centres, SimulationResult& result,
+void build_wisps(const SimulationScene& scene, const StrandStiffness& stiffness, const WispCentres& centres, SimulationResult& result,
                  std::vector<RunningStrand>& running) {
   for (size_t w = 0; w < result.plan.wisps.size(); ++w) {
     const WispPlan& wisp = result.plan.wisps[w];
@@ -287,7 +302,9 @@ void build_wisps(const SimulationScene& scene, const SimulationParams& params,
     simulated.rest_m = centre;
     simulated.anchor_count = static_cast<int32_t>(wisp.anchor_m.size());
     RunningStrand strand;
-    strand.model = build_altitude_strand(centre, params.mass_per_length_kg_m * count);
+    AltitudeStrandOptions hung;  // from its anchors, not clamped at a root
+    hung.clamped_root = false;
+    strand.model = build_hair_strand(centre, stiffness, count, hung);
     strand.model.kinematic_count = 0;  // it hangs from its anchors
     simulated.ghost_count = strand.model.ghost_count();
     for (const Vec3& anchor : wisp.anchor_m) {
@@ -310,6 +327,25 @@ void build_wisps(const SimulationScene& scene, const SimulationParams& params,
     running.push_back(std::move(strand));
   }
   if (result.wisp_tetrahedron_offset.empty()) result.wisp_tetrahedron_offset.push_back(0);
+}
+
+void make_rests_sag_free(const SimulationParams& params, const HeadMotion& motion,
+                         const std::string& source, std::vector<RunningStrand>& running) {
+  // Gravity in the rest frame, as the head holds the body at time 0.
+  const RigidTransform head = motion.at(0);
+  const Vec3 gravity = head.rotation.conjugate() * Vec3(0, -params.gravity_m_s2, 0);
+  double weight_n = 0, support_n = 0, strain = 0;
+  for (RunningStrand& strand : running) {
+    const SagFreeReport report = make_sag_free(strand.model, params.material, gravity);
+    weight_n += report.weight_n;
+    support_n += report.support_n;
+    strain = std::max(strain, report.largest_tension_strain);
+  }
+  spdlog::info(
+      "{}: sag-free rest: the strands hang {:.0f}% of their weight from their roots along "
+      "themselves (largest strain {:.1e}); their support holds up {:.0f}%",
+      source, 100 * (1 - support_n / std::max(weight_n, 1e-300)), strain,
+      100 * support_n / std::max(weight_n, 1e-300));
 }
 
 }  // namespace hair

@@ -12,7 +12,10 @@
 #include "hair/geom/body_sdf.h"
 #include "hair/sim/altitude_strand.h"
 #include "hair/sim/hair_simulation.h"
+#include <string>
+
 #include "hair/sim/strand_dynamics.h"
+#include "hair/sim/strand_stiffness.h"
 
 namespace hair {
 
@@ -53,10 +56,15 @@ WispCentres plan_simulation(const SimulationScene& scene, const SimulationParams
                             const std::optional<BodySdf>& body, SimulationResult& result);
 
 /// The strand guides of result.plan resampled to equal arcs (short hair with longer
-/// segments) as altitude strands, appended to result.guides and returned in that order; a
-/// guide strand with no length is left out.
+/// segments) as altitude strands with the springs of `stiffness`, appended to
+/// result.guides and returned in that order; a guide strand with no length is left out.
+/// With body collisions, each particle after the root closer to the body than the
+/// clearance is moved out to it first (resampling cuts corners into the body), so that
+/// the rest shape is one the collisions keep.
 std::vector<RunningStrand> build_strand_guides(const SimulationScene& scene,
                                                const SimulationParams& params,
+                                               const StrandStiffness& stiffness,
+                                               const std::optional<BodySdf>& body,
                                                SimulationResult& result);
 
 /// Each wisp of result.plan: its centre strand, hung by springs from its members'
@@ -64,9 +72,14 @@ std::vector<RunningStrand> build_strand_guides(const SimulationScene& scene,
 /// the braid on bound to the nearest tetrahedron of the centre strand
 /// (result.wisp_bindings, wisp_guide, wisp_tetrahedron_offset). Counts
 /// result.braided_strands.
-void build_wisps(const SimulationScene& scene, const SimulationParams& params,
-                 const WispCentres& centres, SimulationResult& result,
+void build_wisps(const SimulationScene& scene, const StrandStiffness& stiffness, const WispCentres& centres, SimulationResult& result,
                  std::vector<RunningStrand>& running);
+
+/// Makes every running strand's groom its rest under gravity as the head holds it at
+/// time 0 (make_sag_free: tension along the hair, a support force for the rest); logs the
+/// share of the weight the strands carry along themselves.
+void make_rests_sag_free(const SimulationParams& params, const HeadMotion& motion,
+                         const std::string& source, std::vector<RunningStrand>& running);
 
 /// The orthonormal frame of a centre-strand tetrahedron: origin at its first corner, x
 /// along its first edge, y toward its third corner.

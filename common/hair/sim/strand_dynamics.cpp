@@ -8,161 +8,38 @@
 #include <string>
 
 #include "hair/sim/banded_cholesky.h"
+#include "hair/sim/strand_springs.h"
 
 namespace hair {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-/// Particles a spring reaches along the sequence: q_k to q_k+3, so 3 particles, and
-/// the band of the system holds 3 * 3 + 2 super-diagonals.
-constexpr int kParticleReach = 3;
-constexpr int kBandwidth = 3 * kParticleReach + 2;
-
-/// A spring as a linear form: length = direction . sum_i weight_i x_{particle_i}.
-struct LinearSpring {
-  std::array<int32_t, 4> particle{};
-  std::array<double, 4> weight{};
-  int count = 0;
-  Vec3 direction = Vec3::Zero();
-  double length_m = 0, rest_length_m = 0, stiffness = 0, damping = 0;
-};
-
-double mean_mass(const AltitudeStrand& strand, const LinearSpring& spring) {
-  double sum = 0;
-  for (int i = 0; i < spring.count; ++i)
-    sum += strand.mass_kg[static_cast<size_t>(spring.particle[static_cast<size_t>(i)])];
-  return sum / spring.count;
-}
-
-/// Stiffness and damping per kilogram of the three kinds of two-particle spring (edge,
-/// bend, torsion, in SpringKind's order) and of the altitudes: worked out once per pass,
-/// not once per spring (a square root each).
-struct SpringConstants {
-  std::array<double, 4> stiffness_per_kg{}, damping_per_kg{};
-  explicit SpringConstants(const StrandMaterial& material) {
-    stiffness_per_kg = {material.edge_stiffness_per_kg, material.bend_stiffness_per_kg,
-                        material.torsion_stiffness_per_kg, material.altitude_stiffness_per_kg};
-    for (size_t i = 0; i < 4; ++i)
-      damping_per_kg[i] = 2 * material.damping_ratio * std::sqrt(stiffness_per_kg[i]);
-  }
-};
-constexpr size_t kAltitudeConstants = 3;
-
-/// Calls `visit(LinearSpring)` for every spring of the strand at `position_m`, anchors
-/// excluded; a spring of zero length (no direction) is left out.
-template <typename Visit>
-void for_each_spring(const AltitudeStrand& strand, const StrandMaterial& material,
-                     const std::vector<Vec3>& position_m, Visit&& visit) {
-  const SpringConstants constants(material);
-  LinearSpring linear;
-  linear.count = 2;
-  for (const TwoParticleSpring& spring : strand.springs) {
-    Vec3 span =
-        position_m[static_cast<size_t>(spring.b)] - position_m[static_cast<size_t>(spring.a)];
-    double length = span.norm();
-    if (!(length > 1e-12)) continue;
-    linear.particle[0] = spring.a;
-    linear.particle[1] = spring.b;
-    linear.weight[0] = -1;
-    linear.weight[1] = 1;
-    linear.direction = span / length;
-    linear.length_m = length;
-    linear.rest_length_m = spring.rest_length_m;
-    double mass = 0.5 * (strand.mass_kg[static_cast<size_t>(spring.a)] +
-                         strand.mass_kg[static_cast<size_t>(spring.b)]);
-    auto kind = static_cast<size_t>(spring.kind);
-    linear.stiffness = constants.stiffness_per_kg[kind] * mass;
-    linear.damping = constants.damping_per_kg[kind] * mass;
-    visit(linear);
-  }
-  linear.count = 4;
-  for (const ChainTetrahedron& tetrahedron : strand.tetrahedra) {
-    std::array<Vec3, 4> corners;
-    for (size_t i = 0; i < 4; ++i)
-      corners[i] = position_m[static_cast<size_t>(tetrahedron.particle[i])];
-    int best_which = most_robust_altitude(corners);
-    if (best_which < 0) continue;
-    Altitude best = tetrahedron_altitude(corners, best_which);
-    linear.particle = tetrahedron.particle;
-    linear.weight = best.weight;
-    linear.direction = best.direction;
-    linear.length_m = best.length_m;
-    linear.rest_length_m = tetrahedron.rest_altitude_m[static_cast<size_t>(best_which)];
-    double mass = mean_mass(strand, linear);
-    linear.stiffness = constants.stiffness_per_kg[kAltitudeConstants] * mass;
-    linear.damping = constants.damping_per_kg[kAltitudeConstants] * mass;
-    visit(linear);
-  }
-}
-
-/// A spring's elastic energy, k (l - L)^2 / 2.
-double spring_energy(const LinearSpring& spring) {
-  const double stretch = spring.length_m - spring.rest_length_m;
-  return 0.5 * spring.stiffness * stretch * stretch;
-}
-
-/// The linear system of one step over the free particles (those from `first_free` on,
-/// three unknowns each): its matrix in LAPACK upper band storage, A(i, j) for i <= j at
-/// band[kBandwidth + i - j + j * (kBandwidth + 1)], and its right-hand side.
-class BandSystem {
- public:
-  BandSystem(std::vector<double>& band, std::vector<double>& rhs, int32_t first_free)
-      : band_(band), rhs_(rhs), first_free_(first_free) {}
-
-  int32_t first_free() const { return first_free_; }
-
-  /// Adds scale * d d^T to the block (qa, qb), qa <= qb: the whole block lies in the
-  /// upper triangle when qa < qb, its upper half when qa == qb. `outer` holds d d^T
-  /// (column-major) of the spring at hand.
-  void add_outer(int32_t qa, int32_t qb, double scale, const Eigen::Matrix3d& outer) {
-    int row0 = 3 * (qa - first_free_), col0 = 3 * (qb - first_free_);
-    for (int c = 0; c < 3; ++c) {
-      int j = col0 + c;
-      double* column = band_.data() + kBandwidth - j + static_cast<ptrdiff_t>(j) * kLdab + row0;
-      const double* outer_column = outer.data() + 3 * c;
-      if (qa == qb) {
-        for (int r = 0; r <= c; ++r) column[r] += scale * outer_column[r];
-      } else {
-        for (int r = 0; r < 3; ++r) column[r] += scale * outer_column[r];
-      }
-    }
-  }
-  /// Adds `value` to the diagonal of particle q's block.
-  void add_diagonal(int32_t q, double value) {
-    for (int r = 0; r < 3; ++r) {
-      int i = 3 * (q - first_free_) + r;
-      band_[static_cast<size_t>(kBandwidth + i * kLdab)] += value;
-    }
-  }
-  void add_rhs(int32_t q, const Vec3& value) {
-    int row0 = 3 * (q - first_free_);
-    for (int r = 0; r < 3; ++r) rhs_[static_cast<size_t>(row0 + r)] += value[r];
-  }
-
- private:
-  static constexpr int kLdab = kBandwidth + 1;
-  std::vector<double>& band_;
-  std::vector<double>& rhs_;
-  int32_t first_free_;
-};
+using strand_springs::BandSystem;
+using strand_springs::for_each_spring;
+using strand_springs::kBandwidth;
+using strand_springs::LinearSpring;
+using strand_springs::spring_energy;
 
 /// Inertia, drag and the external forces of every free particle: M (1 + dt drag) on the
-/// diagonal, M v + dt M a on the right. External forces act on the hair; ghosts only
-/// carry inertia (weighed down, they would bend a hanging strand sideways).
+/// diagonal, M v + dt M a on the right. The uniform acceleration (gravity) acts on every
+/// particle, ghosts too (the strand's mass is shared among them, so its weight is the
+/// hair's); the per-particle one (hair-hair repulsion) on the hair particles.
 void add_inertia(BandSystem& system, const AltitudeStrand& strand, const StrandMaterial& material,
                  const std::vector<Vec3>& acceleration_m_s2, const Vec3& uniform_acceleration_m_s2,
-                 double dt_s, const std::vector<Vec3>& v) {
+                 double dt_s, const std::vector<Vec3>& v, const Eigen::Matrix3d* support_rotation) {
+  const bool supported = !strand.rest_support_n.empty();
   for (int32_t q = system.first_free(); q < strand.particle_count(); ++q) {
     auto k = static_cast<size_t>(q);
     double mass = strand.mass_kg[k];
-    Vec3 acceleration = Vec3::Zero();
-    if (!strand.is_ghost[k]) {
-      acceleration = uniform_acceleration_m_s2;
-      if (!acceleration_m_s2.empty()) acceleration += acceleration_m_s2[k];
-    }
+    Vec3 acceleration = uniform_acceleration_m_s2;
+    if (!strand.is_ghost[k] && !acceleration_m_s2.empty()) acceleration += acceleration_m_s2[k];
     system.add_diagonal(q, mass * (1 + dt_s * material.drag_per_s));
-    system.add_rhs(q, mass * v[k] + dt_s * mass * acceleration);
+    Vec3 rhs = mass * v[k] + dt_s * mass * acceleration;
+    if (supported)
+      rhs += dt_s * (support_rotation ? Vec3(*support_rotation * strand.rest_support_n[k])
+                                      : strand.rest_support_n[k]);
+    system.add_rhs(q, rhs);
   }
 }
 
@@ -202,7 +79,7 @@ double add_springs(BandSystem& system, const AltitudeStrand& strand, const Stran
                    double dt_s, const std::vector<Vec3>& x, const std::vector<Vec3>& v) {
   const int32_t first_free = system.first_free();
   double energy_j = 0;
-  for_each_spring(strand, material, x, [&](const LinearSpring& spring) {
+  for_each_spring(strand, material.stiffness_scale, x, [&](const LinearSpring& spring) {
     energy_j += spring_energy(spring);
     if (spring.count == 2 && spring.particle[0] >= first_free) {
       // Most springs: two free particles, weights -1 and 1 (add_spring, unrolled).
@@ -346,7 +223,7 @@ void limit_ghosts(const AltitudeStrand& strand, const StrandMaterial& material,
 double strand_spring_energy(const AltitudeStrand& strand, const StrandMaterial& material,
                             const std::vector<Vec3>& position_m) {
   double energy = 0;
-  for_each_spring(strand, material, position_m,
+  for_each_spring(strand, material.stiffness_scale, position_m,
                   [&](const LinearSpring& spring) { energy += spring_energy(spring); });
   return energy;
 }
@@ -387,14 +264,15 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
                          const std::vector<Vec3>& acceleration_m_s2,
                          const Vec3& uniform_acceleration_m_s2,
                          const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state,
-                         const StrandCollider* collider, double friction) {
+                         const StrandCollider* collider, double friction,
+                         const Eigen::Matrix3d* support_rotation) {
   const int32_t first_free = strand.kinematic_count;
   const int32_t count = strand.particle_count();
   std::vector<Vec3>& x = state.position_m;
   std::vector<Vec3>& v = state.velocity_m_s;
   if (count > first_free)
     solve_velocities(strand, material, acceleration_m_s2, uniform_acceleration_m_s2, anchors, dt_s,
-                     state);
+                     state, support_rotation);
   else
     start_spring_energy_j_ = strand_spring_energy(strand, material, x);
 
@@ -424,16 +302,17 @@ void StrandStepper::solve_velocities(const AltitudeStrand& strand, const StrandM
                                      const std::vector<Vec3>& acceleration_m_s2,
                                      const Vec3& uniform_acceleration_m_s2,
                                      const std::vector<StrandAnchor>& anchors, double dt_s,
-                                     StrandState& state) {
+                                     StrandState& state,
+                                     const Eigen::Matrix3d* support_rotation) {
   const int32_t first_free = strand.kinematic_count;
   const int32_t count = strand.particle_count();
   const int n = 3 * (count - first_free);
   const std::vector<Vec3>& x = state.position_m;
   std::vector<Vec3>& v = state.velocity_m_s;
-  band_.assign(static_cast<size_t>(kBandwidth + 1) * static_cast<size_t>(n), 0.0);
-  rhs_.assign(static_cast<size_t>(n), 0.0);
+  BandSystem::reset(band_, rhs_, count, first_free);
   BandSystem system(band_, rhs_, first_free);
-  add_inertia(system, strand, material, acceleration_m_s2, uniform_acceleration_m_s2, dt_s, v);
+  add_inertia(system, strand, material, acceleration_m_s2, uniform_acceleration_m_s2, dt_s, v,
+              support_rotation);
   start_spring_energy_j_ = add_springs(system, strand, material, dt_s, x, v);
   if (first_free == 0) add_anchor_springs(system, strand, material, anchors, dt_s, x);
 

@@ -11,22 +11,32 @@
 #include <vector>
 
 #include "hair/sim/altitude_strand.h"
+#include "hair/sim/hair_fibre.h"
 
 namespace hair {
 
-/// Spring stiffnesses per kilogram (k / m, in 1/s^2: the squared angular frequency of a
-/// particle on the spring), so that a strand behaves the same however finely it is
-/// sampled and whatever it weighs; each spring's stiffness is this times the mean mass
-/// of its particles.
+/// What a simulated strand is made of and how it moves besides its springs. The
+/// springs' constants follow from the fibre and the fibres per strand
+/// (StrandStiffness, strand_stiffness.h) and are stored in the AltitudeStrand.
 struct StrandMaterial {
-  double edge_stiffness_per_kg = 4e6;      ///< 1/s^2, stretch
-  double bend_stiffness_per_kg = 4e6;      ///< 1/s^2, springs q_k - q_k+2
-  double torsion_stiffness_per_kg = 2e6;   ///< 1/s^2, springs q_k - q_k+3
-  double altitude_stiffness_per_kg = 4e6;  ///< 1/s^2, one altitude per tetrahedron
-  double anchor_stiffness_per_kg = 4e5;    ///< 1/s^2, springs from a wisp to its anchors
-  double damping_ratio = 0.3;              ///< of each spring, a fraction of critical
-  double drag_per_s = 2.0;                 ///< air drag, velocity lost per second
-  double max_stretch = 0.01;               ///< hair segments kept within this strain
+  HairFibre fibre;
+  /// Hairs a guide strand stands for (a lock): a scalp has about 100,000 (Robbins 2012),
+  /// 600 per guide of the paper's 169; 600 hairs of 35 um weigh 3.0 g per metre.
+  double fibres_per_strand = 600;
+  /// How much a lock's hairs hold together in bending and twist, from 0 (free to slide on
+  /// one another: the lock bends with N E I) to 1 (bonded into one bundle: N^2 E I); see
+  /// StrandStiffness and docs/simulate.md.
+  double lock_cohesion = 0.3;
+  /// The hair segments' springs vibrate at this (a numerical stiffness: the strain limit
+  /// keeps the hair's length; see StrandStiffness::assign()). 318 Hz: 4e6 / s^2.
+  double stretch_frequency_hz = 318.3;
+  /// Expert override: every spring constant times this (damping kept at its fraction of
+  /// critical); 1 is the hair's own. For stress tests.
+  double stiffness_scale = 1;
+  double anchor_stiffness_per_kg = 4e5;  ///< 1/s^2, springs from a wisp to its anchors
+  double damping_ratio = 0.3;            ///< of each spring, a fraction of critical
+  double drag_per_s = 2.0;               ///< air drag, velocity lost per second
+  double max_stretch = 0.01;             ///< hair segments kept within this strain
 };
 
 /// Positions and velocities of a strand's particles (its whole sequence, ghosts too).
@@ -82,7 +92,9 @@ class StrandStepper {
   /// the velocities; the kinematic particles' velocities must already be those that take
   /// them where the head puts them at the end of the step. `acceleration_m_s2` is added to
   /// every particle's (gravity, hair-hair repulsion; size particle_count(), or empty for
-  /// `uniform_acceleration_m_s2` alone). Each step:
+  /// `uniform_acceleration_m_s2` alone). The strand's rest support forces
+  /// (strand.rest_support_n, if any) act on their particles turned by `support_rotation`
+  /// (the head's rotation; none: as they are). Each step:
   ///   (M + dt sum_s (c_s + dt k_s) J_s^T J_s) v' = M v + dt f_ext - dt sum_s k_s (l_s - L_s) J_s^T
   ///   x' = x + dt v'
   /// where J_s is spring s's length as a linear form of the positions along its current
@@ -105,7 +117,8 @@ class StrandStepper {
             const std::vector<Eigen::Vector3d>& acceleration_m_s2,
             const Eigen::Vector3d& uniform_acceleration_m_s2,
             const std::vector<StrandAnchor>& anchors, double dt_s, StrandState& state,
-            const StrandCollider* collider = nullptr, double friction = 0);
+            const StrandCollider* collider = nullptr, double friction = 0,
+            const Eigen::Matrix3d* support_rotation = nullptr);
 
   /// strand_spring_energy() at the positions the last step() started from, bit for bit:
   /// the step evaluates every spring there, so the energy costs it one multiply-add per
@@ -119,7 +132,7 @@ class StrandStepper {
                         const std::vector<Eigen::Vector3d>& acceleration_m_s2,
                         const Eigen::Vector3d& uniform_acceleration_m_s2,
                         const std::vector<StrandAnchor>& anchors, double dt_s,
-                        StrandState& state);
+                        StrandState& state, const Eigen::Matrix3d* support_rotation);
   /// The body's pass over the hair segments after the strain limiting (see step()).
   void collide_with_body(const AltitudeStrand& strand, const StrandMaterial& material,
                          const StrandCollider& collider, double friction, double dt_s,

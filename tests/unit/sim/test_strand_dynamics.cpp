@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -35,6 +36,7 @@ std::vector<Vec3> wavy_strand(int segments, double length_m, double amplitude_m,
   return points;
 }
 
+using testing::hair_strand;
 using testing::rest_state;
 
 double hair_length(const AltitudeStrand& strand, const std::vector<Vec3>& position_m) {
@@ -63,8 +65,11 @@ void run(const AltitudeStrand& strand, const StrandMaterial& material, StrandSta
 TEST(AltitudeStrand, StraightStrandGetsGhostsAndCurlNeedsFew) {
   AltitudeStrand straight = build_altitude_strand(straight_strand(Vec3(0, -1, 0), 12, 0.3), 1e-3);
   EXPECT_EQ(straight.hair_count(), 13);
-  // Every segment of a straight strand needs a ghost: no tetrahedron of hair alone has volume.
-  EXPECT_EQ(straight.ghost_count(), 12);
+  // Every segment of a straight strand needs a ghost: no tetrahedron of hair alone has
+  // volume; and one goes before the root, to clamp it.
+  EXPECT_EQ(straight.ghost_count(), 13);
+  EXPECT_EQ(straight.kinematic_count, 3);
+  EXPECT_EQ(straight.hair_particle[0], 1);
   for (const ChainTetrahedron& tetrahedron : straight.tetrahedra) {
     EXPECT_GT(tetrahedron_quality(straight.rest_m[static_cast<size_t>(tetrahedron.particle[0])],
                                   straight.rest_m[static_cast<size_t>(tetrahedron.particle[1])],
@@ -80,12 +85,13 @@ TEST(AltitudeStrand, StraightStrandGetsGhostsAndCurlNeedsFew) {
   }
   AltitudeStrand curl = build_altitude_strand(helix, 1e-3);
   EXPECT_LT(curl.ghost_count(), curl.hair_count() / 2);
-  // Masses: hair mass is length times density; ghosts add half their neighbours' mean.
-  double hair_mass = 0;
-  for (int32_t i = 0; i < straight.hair_count(); ++i)
-    hair_mass +=
-        straight.mass_kg[static_cast<size_t>(straight.hair_particle[static_cast<size_t>(i)])];
-  EXPECT_NEAR(hair_mass, 0.3e-3, 1e-12);
+  // Masses: the strand weighs its length times its mass per length, ghosts included;
+  // each ghost takes a third of its segment's.
+  double mass = 0;
+  for (double m : straight.mass_kg) mass += m;
+  double held = straight.mass_kg[0];  // the leading ghost is held: its mass does not count
+  EXPECT_NEAR(mass - held, 0.3e-3, 1e-12);
+  EXPECT_NEAR(straight.mass_kg[4], 0.025e-3 / 3, 1e-15);  // the second segment's ghost
 }
 
 TEST(AltitudeStrand, AltitudesAreLinearFormsOfTheCorners) {
@@ -134,7 +140,7 @@ TEST(AltitudeStrand, MostRobustAltitudeIsTheLargestOfTheSeven) {
 
 TEST(StrandDynamics, HangingStrandSettlesWithItsLength) {
   // A strand hanging straight down from its root: gravity pulls along it only.
-  AltitudeStrand strand = build_altitude_strand(straight_strand(Vec3(0, -1, 0), 15, 0.4), 1e-3);
+  AltitudeStrand strand = hair_strand(straight_strand(Vec3(0, -1, 0), 15, 0.4));
   StrandMaterial material;
   StrandState state = rest_state(strand);
   run(strand, material, state, 3.0, 1.0 / 120);
@@ -149,9 +155,8 @@ TEST(StrandDynamics, HangingStrandSettlesWithItsLength) {
 
 TEST(StrandDynamics, AStepReportsTheSpringEnergyOfWhereItStarted) {
   // A falling horizontal strand: every step starts somewhere new, its springs stretched.
-  AltitudeStrand strand = build_altitude_strand(straight_strand(Vec3(1, 0, 0), 15, 0.3), 1e-3);
+  AltitudeStrand strand = hair_strand(straight_strand(Vec3(1, 0, 0), 15, 0.3));
   StrandMaterial material;
-  material.bend_stiffness_per_kg = 50;
   StrandState state = rest_state(strand);
   StrandStepper stepper;
   double largest = 0;
@@ -168,12 +173,10 @@ TEST(StrandDynamics, AStepReportsTheSpringEnergyOfWhereItStarted) {
 }
 
 TEST(StrandDynamics, HorizontalStrandFallsSwingsAndDampsOut) {
-  // Released horizontal: it swings down; with damping its energy decays.
-  AltitudeStrand strand = build_altitude_strand(straight_strand(Vec3(1, 0, 0), 15, 0.3), 1e-3);
+  // Released horizontal: it swings down; with damping its energy decays. A lock of hairs
+  // free to slide on one another, 30 cm long, is limp: it swings.
+  AltitudeStrand strand = testing::free_hair_strand(straight_strand(Vec3(1, 0, 0), 15, 0.3));
   StrandMaterial material;
-  material.bend_stiffness_per_kg = 50;  // limp, so that it swings
-  material.torsion_stiffness_per_kg = 50;
-  material.altitude_stiffness_per_kg = 200;
   StrandState state = rest_state(strand);
   StrandStepper stepper;
   const double dt_s = 1.0 / 120;
@@ -188,16 +191,18 @@ TEST(StrandDynamics, HorizontalStrandFallsSwingsAndDampsOut) {
     if (i % 30 == 0) {
       double total = kinetic_energy(strand, state) +
                      strand_elastic_energy(strand, material, state.position_m, {});
-      for (int32_t q : strand.hair_particle)  // gravity acts on the hair particles
-        total += strand.mass_kg[static_cast<size_t>(q)] * 9.81 *
-                 state.position_m[static_cast<size_t>(q)].y();
+      for (size_t q = 0; q < strand.mass_kg.size(); ++q)  // gravity acts on every particle
+        total += strand.mass_kg[q] * 9.81 * state.position_m[q].y();
       energy.push_back(total);
     }
   }
   EXPECT_LT(lowest_tip_y, -0.2);  // it fell
-  // Energy decays: every second lower than the one before, and it ends near rest.
+  // Energy decays: every second lower than the one before, or, come to rest, within 2% of
+  // what the fall released (the altitude springs' switches are not quite conservative);
+  // and it ends near rest.
+  const double released = energy.front() - *std::min_element(energy.begin(), energy.end());
   for (size_t k = 4; k + 4 <= energy.size(); k += 4)
-    EXPECT_LT(energy[k + 3], energy[k - 1] + 1e-12);
+    EXPECT_LT(energy[k + 3], energy[k - 1] + 0.02 * released);
   EXPECT_LT(kinetic_energy(strand, state), 4e-6);  // 1% of the energy it fell by
   Vec3 tip = state.position_m.back();
   EXPECT_GT(-tip.y(), 0.25);  // hangs nearly straight down at the end
@@ -207,7 +212,7 @@ TEST(StrandDynamics, WavyStrandKeepsItsWavesUnderGravity) {
   // Two waves of 2 cm amplitude on a 30 cm strand: after settling under gravity the waves
   // are still there (amplitude within 25%).
   std::vector<Vec3> wave = wavy_strand(32, 0.3, 0.02, 2);
-  AltitudeStrand strand = build_altitude_strand(wave, 1e-3);
+  AltitudeStrand strand = hair_strand(wave);
   auto amplitude = [&](const StrandState& state) {
     double low = 1e9, high = -1e9;
     for (int32_t q : strand.hair_particle) {
@@ -226,12 +231,9 @@ TEST(StrandDynamics, WavyStrandKeepsItsWavesUnderGravity) {
 
 TEST(StrandDynamics, LargeTimeStepsStayFiniteAndBounded) {
   // One step per frame at 30 fps and 1000 times the stiffness: stable, no NaN.
-  AltitudeStrand strand = build_altitude_strand(straight_strand(Vec3(1, -0.2, 0.3), 20, 0.4), 1e-3);
+  AltitudeStrand strand = hair_strand(straight_strand(Vec3(1, -0.2, 0.3), 20, 0.4));
   StrandMaterial material;
-  material.edge_stiffness_per_kg *= 1000;
-  material.bend_stiffness_per_kg *= 1000;
-  material.torsion_stiffness_per_kg *= 1000;
-  material.altitude_stiffness_per_kg *= 1000;
+  material.stiffness_scale = 1000;
   StrandState state = rest_state(strand);
   StrandStepper stepper;
   for (int i = 0; i < 300; ++i) {
@@ -242,7 +244,7 @@ TEST(StrandDynamics, LargeTimeStepsStayFiniteAndBounded) {
 }
 
 TEST(StrandDynamics, TwoRunsAgreeBitForBit) {
-  AltitudeStrand strand = build_altitude_strand(wavy_strand(20, 0.3, 0.03, 1.5), 1e-3);
+  AltitudeStrand strand = hair_strand(wavy_strand(20, 0.3, 0.03, 1.5));
   StrandState a = rest_state(strand), b = rest_state(strand);
   run(strand, StrandMaterial{}, a, 1.0, 1.0 / 120);
   run(strand, StrandMaterial{}, b, 1.0, 1.0 / 120);

@@ -1,0 +1,174 @@
+#include "hair/sim/bundle_cohesion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+/// A cluster's guides are a bundle where somewhere along their middle they are at most
+/// this share as spread as at their roots.
+constexpr double kGatheredSpreadRatio = 0.6;
+
+/// The point at arc fraction `fraction` (0 root, 1 tip) of the polyline `points`.
+Vec3 at_fraction(const std::vector<Vec3>& points, double fraction) {
+  if (points.size() == 1) return points.front();
+  double length = 0;
+  for (size_t i = 0; i + 1 < points.size(); ++i) length += (points[i + 1] - points[i]).norm();
+  const double goal = std::clamp(fraction, 0.0, 1.0) * length;
+  double walked = 0;
+  for (size_t i = 0; i + 1 < points.size(); ++i) {
+    const double step = (points[i + 1] - points[i]).norm();
+    if (walked + step >= goal && step > 0) return points[i] + (goal - walked) / step * (points[i + 1] - points[i]);
+    walked += step;
+  }
+  return points.back();
+}
+
+/// Each hair particle's arc fraction along its strand (equal arcs: i / (n - 1)).
+double fraction_of(int32_t i, int32_t hairs) { return hairs > 1 ? double(i) / (hairs - 1) : 0.0; }
+
+
+/// The polyline `points` sampled at kCentreSamples equal arc fractions, in one walk.
+constexpr int kCentreSamples = 32;
+void sample_fractions(const std::vector<Vec3>& points, std::vector<Vec3>& samples) {
+  samples.assign(kCentreSamples, points.back());
+  double length = 0;
+  for (size_t i = 0; i + 1 < points.size(); ++i) length += (points[i + 1] - points[i]).norm();
+  size_t segment = 0;
+  double walked = 0;
+  for (int k = 0; k < kCentreSamples; ++k) {
+    const double goal = length * k / (kCentreSamples - 1);
+    while (segment + 1 < points.size()) {
+      const double step = (points[segment + 1] - points[segment]).norm();
+      if (walked + step >= goal && step > 0) {
+        samples[static_cast<size_t>(k)] =
+            points[segment] + (goal - walked) / step * (points[segment + 1] - points[segment]);
+        break;
+      }
+      walked += step;
+      ++segment;
+    }
+  }
+}
+
+/// The centre line's point at arc fraction `fraction`, from its samples.
+Vec3 centre_at(const std::vector<Vec3>& centre, double fraction) {
+  const double x = std::clamp(fraction, 0.0, 1.0) * (kCentreSamples - 1);
+  const auto k = std::min(static_cast<int>(x), kCentreSamples - 2);
+  const double t = x - k;
+  return (1 - t) * centre[static_cast<size_t>(k)] + t * centre[static_cast<size_t>(k) + 1];
+}
+
+}  // namespace
+
+template <typename PositionOf>
+std::vector<std::vector<Vec3>> BundleCohesion::centre_at_members(
+    const Bundle& bundle, const std::vector<RunningStrand>& running, PositionOf&& position_of) const {
+  // The centre line: the members' mean at kCentreSamples arc fractions.
+  std::vector<Vec3> centre(kCentreSamples, Vec3::Zero()), line, samples;
+  for (size_t g : bundle.members) {
+    line.clear();
+    for (int32_t i = 0; i < running[g].model.hair_count(); ++i) line.push_back(position_of(g, i));
+    sample_fractions(line, samples);
+    for (int k = 0; k < kCentreSamples; ++k) centre[static_cast<size_t>(k)] += samples[static_cast<size_t>(k)];
+  }
+  for (Vec3& point : centre) point /= static_cast<double>(bundle.members.size());
+  std::vector<std::vector<Vec3>> at_members(bundle.members.size());
+  for (size_t m = 0; m < bundle.members.size(); ++m) {
+    const int32_t hairs = running[bundle.members[m]].model.hair_count();
+    for (int32_t i = 0; i < hairs; ++i) at_members[m].push_back(centre_at(centre, fraction_of(i, hairs)));
+  }
+  return at_members;
+}
+
+BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
+                               const std::vector<RunningStrand>& running, double stiffness_per_s2,
+                               int min_guides)
+    : stiffness_per_s2_(stiffness_per_s2) {
+  if (!(stiffness_per_s2 > 0)) return;
+  std::map<int32_t, std::vector<size_t>> by_cluster;
+  for (size_t g = 0; g < guides.size() && g < running.size(); ++g)
+    if (guides[g].kind == GuideKind::strand) by_cluster[guides[g].cluster].push_back(g);
+  auto rest_point = [&](size_t g, double fraction) {
+    const AltitudeStrand& model = running[g].model;
+    std::vector<Vec3> line;
+    for (int32_t q : model.hair_particle) line.push_back(model.rest_m[static_cast<size_t>(q)]);
+    return at_fraction(line, fraction);
+  };
+  auto spread = [&](const std::vector<size_t>& members, double fraction) {
+    Vec3 mean = Vec3::Zero();
+    std::vector<Vec3> points;
+    for (size_t g : members) points.push_back(rest_point(g, fraction)), mean += points.back();
+    mean /= static_cast<double>(points.size());
+    double sum = 0;
+    for (const Vec3& p : points) sum += (p - mean).squaredNorm();
+    return std::sqrt(sum / static_cast<double>(points.size()));
+  };
+  for (const auto& [cluster, members] : by_cluster) {
+    if (static_cast<int>(members.size()) < min_guides) continue;
+    // Gathered: hanging from fixed hair (a band), or somewhere along their middle (a fifth
+    // to four fifths of their length) at most kGatheredSpreadRatio as spread as at their
+    // roots (a tail whose strands run from the scalp through a band).
+    bool from_band = true;
+    for (size_t g : members) from_band = from_band && guides[g].anchor_point > 0;
+    double narrowest = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= 12; ++k) narrowest = std::min(narrowest, spread(members, 0.2 + 0.05 * k));
+    if (!from_band && !(narrowest <= kGatheredSpreadRatio * spread(members, 0.0))) continue;
+    Bundle bundle;
+    bundle.cluster = cluster;
+    bundle.members = members;
+    auto rest = [&](size_t g, int32_t i) {
+      const AltitudeStrand& model = running[g].model;
+      return model.rest_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
+    };
+    const auto centre = centre_at_members(bundle, running, rest);
+    for (size_t m = 0; m < members.size(); ++m) {
+      std::vector<double> radius;
+      for (int32_t i = 0; i < running[members[m]].model.hair_count(); ++i)
+        radius.push_back((rest(members[m], i) - centre[m][static_cast<size_t>(i)]).norm());
+      bundle.rest_radius_m.push_back(std::move(radius));
+    }
+    member_.resize(running.size(), 0);
+    for (size_t g : bundle.members) member_[g] = 1;
+    bundles_.push_back(std::move(bundle));
+  }
+}
+
+int64_t BundleCohesion::guide_count() const {
+  int64_t count = 0;
+  for (const Bundle& bundle : bundles_) count += static_cast<int64_t>(bundle.members.size());
+  return count;
+}
+
+void BundleCohesion::accelerations(const std::vector<RunningStrand>& running,
+                                   std::vector<std::vector<Vec3>>& acceleration_m_s2) const {
+  if (!active()) return;
+  auto now = [&](size_t g, int32_t i) {
+    const AltitudeStrand& model = running[g].model;
+    return running[g].state.position_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
+  };
+  for (const Bundle& bundle : bundles_) {
+    const auto centre = centre_at_members(bundle, running, now);
+    for (size_t m = 0; m < bundle.members.size(); ++m) {
+      const size_t g = bundle.members[m];
+      const AltitudeStrand& model = running[g].model;
+      acceleration_m_s2[g].assign(model.rest_m.size(), Vec3::Zero());
+      for (int32_t i = 0; i < model.hair_count(); ++i) {
+        const auto q = static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)]);
+        if (static_cast<int32_t>(q) < model.kinematic_count) continue;
+        const Vec3 off = now(g, i) - centre[m][static_cast<size_t>(i)];
+        const double radius = off.norm();
+        const double excess = radius - bundle.rest_radius_m[m][static_cast<size_t>(i)];
+        if (!(excess > 0) || !(radius > 0)) continue;
+        acceleration_m_s2[g][q] -= (stiffness_per_s2_ * excess / radius) * off;
+      }
+    }
+  }
+}
+
+}  // namespace hair

@@ -1,0 +1,143 @@
+// Tails that hold together (BundleCohesion) and the measures of how guides keep their
+// groom (guide_motion_measures), on hand-made guides.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "hair/sim/bundle_cohesion.h"
+#include "hair/sim/guide_motion_measures.h"
+#include "hair/sim/simulation_setup.h"
+#include "unit/strand_rest_state.h"
+
+namespace hair {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Five strands from a ring of radius `root_radius_m` on the crown, drawn together to a
+/// ring of 1 cm by `band_y_m` below, then hanging 20 cm (a ponytail through its band).
+std::vector<std::vector<Vec3>> tail(double root_radius_m, double band_radius_m) {
+  std::vector<std::vector<Vec3>> strands;
+  for (int s = 0; s < 5; ++s) {
+    const double angle = 2 * std::numbers::pi * s / 5;
+    const Vec3 across(std::cos(angle), 0, std::sin(angle));
+    std::vector<Vec3> points;
+    for (int i = 0; i <= 4; ++i)  // from the root to the band
+      points.push_back((root_radius_m + (band_radius_m - root_radius_m) * i / 4) * across -
+                       Vec3(0, 0.02 * i, 0));
+    for (int i = 1; i <= 8; ++i) points.push_back(points[4] - Vec3(0, 0.025 * i, 0));
+    strands.push_back(points);
+  }
+  return strands;
+}
+
+struct Guides {
+  std::vector<SimulatedGuide> guides;
+  std::vector<RunningStrand> running;
+};
+
+Guides make_guides(const std::vector<std::vector<Vec3>>& strands) {
+  Guides made;
+  for (size_t s = 0; s < strands.size(); ++s) {
+    SimulatedGuide guide;
+    guide.strand = static_cast<int64_t>(s);
+    guide.cluster = 0;
+    guide.rest_m = strands[s];
+    made.guides.push_back(guide);
+    RunningStrand strand;
+    strand.model = testing::hair_strand(strands[s]);
+    strand.state = testing::rest_state(strand.model);
+    made.running.push_back(std::move(strand));
+  }
+  return made;
+}
+
+TEST(BundleCohesion, AGatheredClusterIsABundleALooseOneIsNot) {
+  const Guides gathered = make_guides(tail(0.05, 0.01));
+  const BundleCohesion cohesion(gathered.guides, gathered.running, 1600);
+  EXPECT_TRUE(cohesion.active());
+  EXPECT_EQ(cohesion.bundle_count(), 1);
+  EXPECT_EQ(cohesion.guide_count(), 5);
+  // Hair hanging loose from the same ring, not drawn together.
+  const Guides loose = make_guides(tail(0.05, 0.05));
+  EXPECT_FALSE(BundleCohesion(loose.guides, loose.running, 1600).active());
+  // Off.
+  EXPECT_FALSE(BundleCohesion(gathered.guides, gathered.running, 0).active());
+}
+
+TEST(BundleCohesion, DrawsBackOnlyWhatStraysFartherThanAtRest) {
+  Guides g = make_guides(tail(0.05, 0.01));
+  const BundleCohesion cohesion(g.guides, g.running, 1600);
+  std::vector<std::vector<Vec3>> acceleration(g.running.size());
+  cohesion.accelerations(g.running, acceleration);
+  for (const auto& strand : acceleration)
+    for (const Vec3& a : strand) EXPECT_LT(a.norm(), 1e-9);  // at rest: nothing
+  // Strand 0's tip swung 5 cm out: drawn back towards the others, at 1600/s^2 times
+  // (about) the excess.
+  AltitudeStrand& model = g.running[0].model;
+  const auto tip = static_cast<size_t>(model.hair_particle.back());
+  g.running[0].state.position_m[tip] += Vec3(0.05, 0, 0);
+  cohesion.accelerations(g.running, acceleration);
+  EXPECT_LT(acceleration[0][tip].x(), -0.5 * 1600 * 0.03);
+  EXPECT_GT(acceleration[0][tip].x(), -1600 * 0.06);
+  // Swung 1 cm in instead: closer to the centre than at rest, left alone.
+  g.running[0].state.position_m[tip] -= Vec3(0.06, 0, 0);
+  cohesion.accelerations(g.running, acceleration);
+  EXPECT_LT(acceleration[0][tip].norm(), 1e-9);
+}
+
+/// Guides `rest` over `frames` frames: the head yawed by 10 degrees a frame and the
+/// guides turned with it, but guide 1's tip moved by `tip_move_m` (in the head's frame)
+/// from frame 1 on.
+SimulatedGuides turning_guides(int frames, double tip_move_m) {
+  SimulatedGuides guides;
+  std::vector<std::vector<Vec3>> strands{{Vec3(0, 0, 0), Vec3(0, -0.1, 0), Vec3(0, -0.2, 0)},
+                                         {Vec3(0.1, 0, 0), Vec3(0.1, -0.1, 0), Vec3(0.1, -0.2, 0)}};
+  for (const auto& points : strands) {
+    Points3f block(3, 3);
+    for (int i = 0; i < 3; ++i) block.row(i) = points[static_cast<size_t>(i)].cast<float>().transpose();
+    guides.rest.append_strand(block);
+  }
+  guides.rest.strand_attributes["cluster"] = std::vector<int32_t>{0, 0};
+  guides.frame_count = frames;
+  for (int f = 0; f < frames; ++f) {
+    RigidTransform head;
+    head.rotation = Eigen::AngleAxisd(f * 10 * std::numbers::pi / 180, Vec3::UnitY());
+    guides.head.push_back(head);
+    for (size_t s = 0; s < strands.size(); ++s)
+      for (size_t i = 0; i < 3; ++i) {
+        Vec3 p = strands[s][i];
+        if (s == 1 && i == 2 && f > 0) p += Vec3(0, 0, tip_move_m);
+        const Vec3 world = head.apply(p);
+        for (int c = 0; c < 3; ++c) guides.guide_points_m.push_back(static_cast<float>(world[c]));
+      }
+  }
+  return guides;
+}
+
+TEST(GuideMotionMeasures, DriftIsMeasuredInTheHeadsFrame) {
+  const std::vector<GuideDrift> drift = guide_drift(turning_guides(5, 0.02));
+  ASSERT_EQ(drift.size(), 2u);
+  EXPECT_NEAR(drift[0].length_m, 0.2, 1e-6);
+  EXPECT_LT(drift[0].largest_share, 1e-6);  // turned with the head: no drift
+  EXPECT_NEAR(drift[1].final_share, 0.1, 1e-5);  // 2 cm of 20
+  EXPECT_FALSE(drift[1].flipped);
+  const DriftSummary summary = summarise_drift(drift);
+  EXPECT_EQ(summary.guides, 2);
+  EXPECT_NEAR(summary.mean, 0.05, 1e-5);
+  EXPECT_NEAR(summary.largest, 0.1, 1e-5);
+}
+
+TEST(GuideMotionMeasures, ABundlesSpreadIsAgainstItsRest) {
+  const BundleSpread spread = bundle_spread(turning_guides(4, 0.1), -1, 1.0);
+  EXPECT_EQ(spread.cluster, 0);
+  EXPECT_EQ(spread.guides, 2);
+  EXPECT_NEAR(spread.rest_spread_m, 0.05, 1e-6);  // two tips 10 cm apart
+  ASSERT_EQ(spread.ratio.size(), 4u);
+  EXPECT_NEAR(spread.ratio[0], 1.0, 1e-6);
+  EXPECT_NEAR(spread.ratio[1], std::hypot(0.1, 0.1) / 0.1, 1e-5);
+}
+
+}  // namespace
+}  // namespace hair
