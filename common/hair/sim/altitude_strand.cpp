@@ -94,7 +94,7 @@ double tetrahedron_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
   return 6 * std::numbers::sqrt2 * volume / (rms * rms * rms);
 }
 
-int most_robust_altitude(const std::array<Vec3, 4>& x, int preferred, double margin) {
+RobustAltitudes robust_altitudes(const std::array<Vec3, 4>& x) {
   // The six edges once; each size is then the cross product kOppositeFace or kEdgePair
   // names (e.g. face 0, corners 1 2 3: (x2 - x1) x (x3 - x1)).
   const Vec3 e01 = x[1] - x[0], e02 = x[2] - x[0], e03 = x[3] - x[0];
@@ -103,18 +103,27 @@ int most_robust_altitude(const std::array<Vec3, 4>& x, int preferred, double mar
                                    e01.cross(e03).squaredNorm(), e01.cross(e02).squaredNorm(),
                                    e01.cross(e23).squaredNorm(), e02.cross(e13).squaredNorm(),
                                    e03.cross(e12).squaredNorm()};
-  int best = -1;
-  double best_size = 0;
+  RobustAltitudes found;
   for (int which = 0; which < 7; ++which) {
-    if (size[static_cast<size_t>(which)] > best_size) {
-      best_size = size[static_cast<size_t>(which)];
-      best = which;
+    const double here = size[static_cast<size_t>(which)];
+    if (here > found.best_size) {
+      found.second = found.best;
+      found.second_size = found.best_size;
+      found.best = which;
+      found.best_size = here;
+    } else if (here > found.second_size) {
+      found.second = which;
+      found.second_size = here;
     }
   }
-  if (preferred >= 0 && best >= 0 &&
-      size[static_cast<size_t>(preferred)] * margin * margin >= best_size)
-    return preferred;
-  return best;
+  return found;
+}
+
+int most_robust_altitude(const std::array<Vec3, 4>& x) { return robust_altitudes(x).best; }
+
+double second_altitude_share(double robustness_ratio) {
+  const double from = 1 / kAltitudeBlendFactor;
+  return 0.5 * std::clamp((robustness_ratio - from) / (1 - from), 0.0, 1.0);
 }
 
 Altitude tetrahedron_altitude(const std::array<Vec3, 4>& x, int which) {
@@ -244,7 +253,6 @@ AltitudeStrand build_altitude_strand(const std::vector<Vec3>& hair_points_m,
     for (int which = 0; which < 7; ++which)
       tetrahedron.rest_altitude_m[static_cast<size_t>(which)] =
           tetrahedron_altitude(corners, which).length_m;
-    tetrahedron.rest_altitude = static_cast<int8_t>(most_robust_altitude(corners));
     strand.tetrahedra.push_back(tetrahedron);
   }
   return strand;

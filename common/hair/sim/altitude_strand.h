@@ -34,10 +34,6 @@ struct TwoParticleSpring {
 struct ChainTetrahedron {
   std::array<int32_t, 4> particle{};
   std::array<double, 7> rest_altitude_m{};
-  /// The most robust altitude at rest: kept while no other is 10% more robust, so that
-  /// two nearly equal ones do not take turns from step to step (a chatter that never
-  /// comes to rest).
-  int8_t rest_altitude = -1;
   double stiffness_n_m = 0;  ///< of its altitude spring, set by StrandStiffness::assign()
   double damping_n_s_m = 0;
 };
@@ -121,9 +117,24 @@ struct Altitude {
 
 /// Which of the seven altitudes of (x0, x1, x2, x3) has the largest robustness_m2: the
 /// one Selle et al. use. Cheaper than computing all seven with tetrahedron_altitude().
-/// With `preferred` (0..6), that one unless another is more than `margin` times as robust.
-int most_robust_altitude(const std::array<Eigen::Vector3d, 4>& x, int preferred = -1,
-                         double margin = 1.1);
+int most_robust_altitude(const std::array<Eigen::Vector3d, 4>& x);
+
+/// The two most robust altitudes of (x0, x1, x2, x3) and their squared robustness
+/// (-1 and 0 where there is none).
+struct RobustAltitudes {
+  int best = -1, second = -1;
+  double best_size = 0, second_size = 0;  ///< robustness_m2 squared
+};
+RobustAltitudes robust_altitudes(const std::array<Eigen::Vector3d, 4>& x);
+
+/// Where the second most robust altitude is within this factor of the most robust, the
+/// tetrahedron's altitude spring is shared between the two, from nothing at this factor
+/// to half each when they tie: the spring changes smoothly as they trade places (Selle et
+/// al.'s single choice jumps, and two nearly equal altitudes took turns step after step,
+/// a chatter that never came to rest).
+constexpr double kAltitudeBlendFactor = 1.1;
+/// The second altitude's share of the spring for robustness ratio second / best.
+double second_altitude_share(double robustness_ratio);
 
 /// Altitude `which` (0..6, as ChainTetrahedron::rest_altitude_m) of (x0, x1, x2, x3).
 /// Point-face altitudes weigh the face's corners by the barycentric coordinates of the

@@ -33,21 +33,23 @@ Vec3 at_fraction(const std::vector<Vec3>& points, double fraction) {
 double fraction_of(int32_t i, int32_t hairs) { return hairs > 1 ? double(i) / (hairs - 1) : 0.0; }
 
 
-/// The polyline `points` sampled at kCentreSamples equal arc fractions, in one walk.
+/// The hair particles of running strand `g`, through `position_of(g, i)`, sampled at
+/// kCentreSamples equal arc fractions in one walk, into samples[0 .. kCentreSamples).
 constexpr int kCentreSamples = 32;
-void sample_fractions(const std::vector<Vec3>& points, std::vector<Vec3>& samples) {
-  samples.assign(kCentreSamples, points.back());
+template <typename PositionOf>
+void sample_fractions(PositionOf&& position_of, size_t g, int32_t hairs, Vec3* samples) {
   double length = 0;
-  for (size_t i = 0; i + 1 < points.size(); ++i) length += (points[i + 1] - points[i]).norm();
-  size_t segment = 0;
+  for (int32_t i = 0; i + 1 < hairs; ++i) length += (position_of(g, i + 1) - position_of(g, i)).norm();
+  int32_t segment = 0;
   double walked = 0;
   for (int k = 0; k < kCentreSamples; ++k) {
     const double goal = length * k / (kCentreSamples - 1);
-    while (segment + 1 < points.size()) {
-      const double step = (points[segment + 1] - points[segment]).norm();
+    samples[k] = position_of(g, hairs - 1);
+    while (segment + 1 < hairs) {
+      const Vec3 a = position_of(g, segment), b = position_of(g, segment + 1);
+      const double step = (b - a).norm();
       if (walked + step >= goal && step > 0) {
-        samples[static_cast<size_t>(k)] =
-            points[segment] + (goal - walked) / step * (points[segment + 1] - points[segment]);
+        samples[k] = a + (goal - walked) / step * (b - a);
         break;
       }
       walked += step;
@@ -67,23 +69,22 @@ Vec3 centre_at(const std::vector<Vec3>& centre, double fraction) {
 }  // namespace
 
 template <typename PositionOf>
-std::vector<std::vector<Vec3>> BundleCohesion::centre_at_members(
-    const Bundle& bundle, const std::vector<RunningStrand>& running, PositionOf&& position_of) const {
-  // The centre line: the members' mean at kCentreSamples arc fractions.
-  std::vector<Vec3> centre(kCentreSamples, Vec3::Zero()), line, samples;
-  for (size_t g : bundle.members) {
-    line.clear();
-    for (int32_t i = 0; i < running[g].model.hair_count(); ++i) line.push_back(position_of(g, i));
-    sample_fractions(line, samples);
-    for (int k = 0; k < kCentreSamples; ++k) centre[static_cast<size_t>(k)] += samples[static_cast<size_t>(k)];
+void BundleCohesion::centre_line(const Bundle& bundle, const std::vector<RunningStrand>& running,
+                                 PositionOf&& position_of, std::vector<Vec3>& samples,
+                                 std::vector<Vec3>& centre) const {
+  const auto members = static_cast<int64_t>(bundle.members.size());
+  samples.resize(static_cast<size_t>(members) * kCentreSamples);
+#pragma omp parallel for schedule(static) if (members >= 64)
+  for (int64_t m = 0; m < members; ++m) {
+    const size_t g = bundle.members[static_cast<size_t>(m)];
+    sample_fractions(position_of, g, running[g].model.hair_count(),
+                     samples.data() + m * kCentreSamples);
   }
-  for (Vec3& point : centre) point /= static_cast<double>(bundle.members.size());
-  std::vector<std::vector<Vec3>> at_members(bundle.members.size());
-  for (size_t m = 0; m < bundle.members.size(); ++m) {
-    const int32_t hairs = running[bundle.members[m]].model.hair_count();
-    for (int32_t i = 0; i < hairs; ++i) at_members[m].push_back(centre_at(centre, fraction_of(i, hairs)));
-  }
-  return at_members;
+  centre.assign(kCentreSamples, Vec3::Zero());
+  for (int64_t m = 0; m < members; ++m)  // in member order: deterministic
+    for (int k = 0; k < kCentreSamples; ++k)
+      centre[static_cast<size_t>(k)] += samples[static_cast<size_t>(m * kCentreSamples + k)];
+  for (Vec3& point : centre) point /= static_cast<double>(members);
 }
 
 BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
@@ -126,11 +127,13 @@ BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
       const AltitudeStrand& model = running[g].model;
       return model.rest_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
     };
-    const auto centre = centre_at_members(bundle, running, rest);
+    std::vector<Vec3> samples, centre;
+    centre_line(bundle, running, rest, samples, centre);
     for (size_t m = 0; m < members.size(); ++m) {
       std::vector<double> radius;
-      for (int32_t i = 0; i < running[members[m]].model.hair_count(); ++i)
-        radius.push_back((rest(members[m], i) - centre[m][static_cast<size_t>(i)]).norm());
+      const int32_t hairs = running[members[m]].model.hair_count();
+      for (int32_t i = 0; i < hairs; ++i)
+        radius.push_back((rest(members[m], i) - centre_at(centre, fraction_of(i, hairs))).norm());
       bundle.rest_radius_m.push_back(std::move(radius));
     }
     member_.resize(running.size(), 0);
@@ -153,17 +156,20 @@ void BundleCohesion::accelerations(const std::vector<RunningStrand>& running,
     return running[g].state.position_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
   };
   for (const Bundle& bundle : bundles_) {
-    const auto centre = centre_at_members(bundle, running, now);
-    for (size_t m = 0; m < bundle.members.size(); ++m) {
-      const size_t g = bundle.members[m];
+    centre_line(bundle, running, now, samples_, centre_);
+    const auto members = static_cast<int64_t>(bundle.members.size());
+#pragma omp parallel for schedule(static) if (members >= 64)
+    for (int64_t m = 0; m < members; ++m) {
+      const size_t g = bundle.members[static_cast<size_t>(m)];
       const AltitudeStrand& model = running[g].model;
       acceleration_m_s2[g].assign(model.rest_m.size(), Vec3::Zero());
-      for (int32_t i = 0; i < model.hair_count(); ++i) {
+      const int32_t hairs = model.hair_count();
+      for (int32_t i = 0; i < hairs; ++i) {
         const auto q = static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)]);
         if (static_cast<int32_t>(q) < model.kinematic_count) continue;
-        const Vec3 off = now(g, i) - centre[m][static_cast<size_t>(i)];
+        const Vec3 off = now(g, i) - centre_at(centre_, fraction_of(i, hairs));
         const double radius = off.norm();
-        const double excess = radius - bundle.rest_radius_m[m][static_cast<size_t>(i)];
+        const double excess = radius - bundle.rest_radius_m[static_cast<size_t>(m)][static_cast<size_t>(i)];
         if (!(excess > 0) || !(radius > 0)) continue;
         acceleration_m_s2[g][q] -= (stiffness_per_s2_ * excess / radius) * off;
       }

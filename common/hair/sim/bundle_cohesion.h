@@ -46,16 +46,18 @@ class BundleCohesion {
     /// Per member, per hair particle: its rest distance from the rest centre line.
     std::vector<std::vector<double>> rest_radius_m;
   };
-  /// The centre line of `bundle` at each member's hair particles' arc fractions, from
-  /// positions `position_of(member, hair particle)`.
+  /// The centre line of `bundle` at kCentreSamples arc fractions (the mean of its
+  /// members' polylines there), from positions `position_of(member, hair particle)`, into
+  /// `centre`; `samples` is scratch (members x samples).
   template <typename PositionOf>
-  std::vector<std::vector<Eigen::Vector3d>> centre_at_members(const Bundle& bundle,
-                                                              const std::vector<RunningStrand>& running,
-                                                              PositionOf&& position_of) const;
+  void centre_line(const Bundle& bundle, const std::vector<RunningStrand>& running,
+                   PositionOf&& position_of, std::vector<Eigen::Vector3d>& samples,
+                   std::vector<Eigen::Vector3d>& centre) const;
 
   double stiffness_per_s2_ = 0;
   std::vector<Bundle> bundles_;
   std::vector<uint8_t> member_;  ///< per running strand
+  mutable std::vector<Eigen::Vector3d> samples_, centre_;  ///< scratch of accelerations()
 };
 
 }  // namespace hair

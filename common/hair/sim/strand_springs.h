@@ -37,8 +37,8 @@ struct LinearSpring {
 /// Calls `visit(LinearSpring)` for every spring of the strand at `position_m`, anchors
 /// excluded, with each spring's stiffness and damping times `stiffness_scale`; a spring
 /// of zero length (no direction) is left out. Each tetrahedron contributes the altitude
-/// with the most robust normal at `position_m` (Selle et al.), its rest one while none is
-/// 10% more robust.
+/// with the most robust normal at `position_m` (Selle et al.), sharing its spring with
+/// the second where that is within kAltitudeBlendFactor of it.
 template <typename Visit>
 void for_each_spring(const AltitudeStrand& strand, double stiffness_scale,
                      const std::vector<Eigen::Vector3d>& position_m, Visit&& visit) {
@@ -72,19 +72,26 @@ void for_each_spring(const AltitudeStrand& strand, double stiffness_scale,
     std::array<Eigen::Vector3d, 4> corners;
     for (size_t i = 0; i < 4; ++i)
       corners[i] = position_m[static_cast<size_t>(tetrahedron.particle[i])];
-    int best_which = most_robust_altitude(corners, tetrahedron.rest_altitude);
-    if (best_which < 0) continue;
-    Altitude best = tetrahedron_altitude(corners, best_which);
+    const RobustAltitudes robust = robust_altitudes(corners);
+    if (robust.best < 0) continue;
+    const double second_share =
+        robust.second >= 0 ? second_altitude_share(std::sqrt(robust.second_size / robust.best_size))
+                           : 0.0;
     linear.particle = tetrahedron.particle;
-    linear.weight = best.weight;
-    linear.direction = best.direction;
-    linear.length_m = best.length_m;
-    linear.rest_length_m = tetrahedron.rest_altitude_m[static_cast<size_t>(best_which)];
-    linear.stiffness = tetrahedron.stiffness_n_m * stiffness_scale;
-    linear.damping = tetrahedron.damping_n_s_m * damping_scale;
     linear.index = static_cast<int32_t>(t);
-    linear.which = best_which;
-    visit(linear);
+    for (int pick = 0; pick < (second_share > 0 ? 2 : 1); ++pick) {
+      const int which = pick == 0 ? robust.best : robust.second;
+      const double share = pick == 0 ? 1 - second_share : second_share;
+      Altitude altitude = tetrahedron_altitude(corners, which);
+      linear.weight = altitude.weight;
+      linear.direction = altitude.direction;
+      linear.length_m = altitude.length_m;
+      linear.rest_length_m = tetrahedron.rest_altitude_m[static_cast<size_t>(which)];
+      linear.stiffness = share * tetrahedron.stiffness_n_m * stiffness_scale;
+      linear.damping = share * tetrahedron.damping_n_s_m * damping_scale;
+      linear.which = which;
+      visit(linear);
+    }
   }
 }
 

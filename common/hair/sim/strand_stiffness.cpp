@@ -190,12 +190,26 @@ ChainCalibration calibrate_chain(double twist_to_bend, double hair_segment_n_m,
   // segments' (the chord on the axis), so scaling the springs scales it less than in
   // proportion where the segments are not far stiffer; a fixed-point iteration.
   const double torsion_share = std::exp(log_torsion);
-  double scale = 1;
-  ChainRigidity rigidity;
+  auto rigidity_at = [&](double scale) {
+    return measure_chain_rigidity(scale, scale * torsion_share, hair_segment_n_m, options);
+  };
+  // Secant iterations on the bending rigidity against the scale, from the scale that
+  // unit rigidity would need were it proportional.
+  double previous_scale = 1, scale = 1;
+  ChainRigidity previous = rigidity_at(previous_scale), rigidity = previous;
+  scale = 1 / previous.bending_n_m2;
   for (int iteration = 0; iteration < 30; ++iteration) {
-    rigidity = measure_chain_rigidity(scale, scale * torsion_share, hair_segment_n_m, options);
-    scale /= rigidity.bending_n_m2;
-    if (std::abs(rigidity.bending_n_m2 - 1) < 1e-9) break;
+    rigidity = rigidity_at(scale);
+    if (std::abs(rigidity.bending_n_m2 - 1) < 1e-10) break;
+    const double slope =
+        (rigidity.bending_n_m2 - previous.bending_n_m2) / (scale - previous_scale);
+    previous_scale = scale;
+    previous = rigidity;
+    if (!(slope > 0)) {
+      scale /= rigidity.bending_n_m2;
+      continue;
+    }
+    scale += (1 - rigidity.bending_n_m2) / slope;
   }
   ChainCalibration calibration;
   calibration.bend_group_n_m = scale;

@@ -50,11 +50,13 @@ TEST(ChainRigidity, TheCalibratedChainBendsAsTheLockAndTwistsAsNearAsItCan) {
   const ChainCalibration calibration = calibrate_chain(ratio);
   const ChainRigidity rigidity =
       measure_chain_rigidity(calibration.bend_group_n_m, calibration.torsion_n_m);
-  EXPECT_NEAR(rigidity.bending_n_m2, 1.0, 1e-5);
+  // (to 1e-4: the measure's second differences under hair segments 1e6 times stiffer
+  // than the bending springs carry rounding of a few parts in a million)
+  EXPECT_NEAR(rigidity.bending_n_m2, 1.0, 1e-4);
   // The altitude chain cannot twist as readily as hair does (0.46 of its bending
-  // rigidity): it comes to about 0.18, and the calibration reports what it reached.
+  // rigidity): it comes to about 0.22, and the calibration reports what it reached.
   EXPECT_NEAR(calibration.achieved_twist_to_bend, rigidity.twisting_n_m2 / rigidity.bending_n_m2,
-              1e-6);
+              1e-4);
   EXPECT_GT(calibration.achieved_twist_to_bend, 0.15);
   EXPECT_LT(calibration.achieved_twist_to_bend, ratio);
   EXPECT_GT(calibration.torsion_n_m, 0);
@@ -149,8 +151,7 @@ TEST(HairPhysics, ShortHorizontalStrandsDeflectAsCantilevers) {
   // A 3 cm lock of free hairs held horizontally at its root bends under its own weight w
   // per metre by delta = w L^4 / (8 E I) at its tip (Euler-Bernoulli; delta / L = 0.037),
   // E I the lock's. In eight directions about the vertical (its ghosts sit differently
-  // about each): the mean within 10% of the answer, each within 25% (the chain bends
-  // somewhat unevenly about its axis: docs/simulate.md).
+  // about each): each within 10% of the answer, and the mean.
   const double length_m = 0.03;
   const int segments = 20;
   const StrandMaterial material;
@@ -168,7 +169,7 @@ TEST(HairPhysics, ShortHorizontalStrandsDeflectAsCantilevers) {
     run(strand, material, state, 3.0, 1.0 / 2000, [](double, const StrandState&) {});
     const double ratio = -tip_of(strand, state).y() / expected_m;
     RecordProperty("deflection_ratio_" + std::to_string(direction), std::to_string(ratio));
-    EXPECT_NEAR(ratio, 1.0, 0.25) << "direction " << direction;
+    EXPECT_NEAR(ratio, 1.0, 0.10) << "direction " << direction;
     sum += ratio;
     double fastest = 0;  // its hair at rest by then
     for (int32_t q : strand.hair_particle)
