@@ -74,9 +74,12 @@ void for_each_spring(const AltitudeStrand& strand, double stiffness_scale,
       corners[i] = position_m[static_cast<size_t>(tetrahedron.particle[i])];
     const RobustAltitudes robust = robust_altitudes(corners);
     if (robust.best < 0) continue;
+    // (Most tetrahedra have no second within the factor: no square root for them.)
     const double second_share =
-        robust.second >= 0 ? second_altitude_share(std::sqrt(robust.second_size / robust.best_size))
-                           : 0.0;
+        robust.second >= 0 &&
+                robust.second_size * kAltitudeBlendFactor * kAltitudeBlendFactor > robust.best_size
+            ? second_altitude_share(std::sqrt(robust.second_size / robust.best_size))
+            : 0.0;
     linear.particle = tetrahedron.particle;
     linear.index = static_cast<int32_t>(t);
     for (int pick = 0; pick < (second_share > 0 ? 2 : 1); ++pick) {

@@ -138,6 +138,29 @@ TEST(AltitudeStrand, MostRobustAltitudeIsTheLargestOfTheSeven) {
   EXPECT_EQ(most_robust_altitude(point), -1);
 }
 
+TEST(AltitudeStrand, TwoNearlyEqualAltitudesShareTheSpringSmoothly) {
+  // Nothing for the second until it comes within the blend factor, half each at a tie,
+  // continuous and rising in between.
+  EXPECT_EQ(second_altitude_share(0.5), 0.0);
+  EXPECT_EQ(second_altitude_share(1 / kAltitudeBlendFactor), 0.0);
+  EXPECT_DOUBLE_EQ(second_altitude_share(1.0), 0.5);
+  double previous = 0;
+  for (int i = 1; i <= 100; ++i) {
+    const double ratio = 1 / kAltitudeBlendFactor + (1 - 1 / kAltitudeBlendFactor) * i / 100.0;
+    const double share = second_altitude_share(ratio);
+    EXPECT_GE(share, previous);
+    EXPECT_LT(share - previous, 0.006);  // no jump
+    previous = share;
+  }
+  // A regular tetrahedron: its three pairs of opposite edges tie, the most robust.
+  const std::array<Vec3, 4> corners{Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1),
+                                    Vec3(-1, -1, 1)};
+  const RobustAltitudes robust = robust_altitudes(corners);
+  EXPECT_GE(robust.best, 4);
+  EXPECT_GE(robust.second, 4);
+  EXPECT_NEAR(robust.second_size, robust.best_size, 1e-12);
+}
+
 TEST(StrandDynamics, HangingStrandSettlesWithItsLength) {
   // A strand hanging straight down from its root: gravity pulls along it only.
   AltitudeStrand strand = hair_strand(straight_strand(Vec3(0, -1, 0), 15, 0.4));
