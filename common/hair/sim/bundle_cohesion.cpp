@@ -5,6 +5,8 @@
 #include <limits>
 #include <map>
 
+#include "hair/geom/polyline.h"
+
 namespace hair {
 namespace {
 
@@ -13,21 +15,6 @@ using Vec3 = Eigen::Vector3d;
 /// A cluster's guides are a bundle where somewhere along their middle they are at most
 /// this share as spread as at their roots.
 constexpr double kGatheredSpreadRatio = 0.6;
-
-/// The point at arc fraction `fraction` (0 root, 1 tip) of the polyline `points`.
-Vec3 at_fraction(const std::vector<Vec3>& points, double fraction) {
-  if (points.size() == 1) return points.front();
-  double length = 0;
-  for (size_t i = 0; i + 1 < points.size(); ++i) length += (points[i + 1] - points[i]).norm();
-  const double goal = std::clamp(fraction, 0.0, 1.0) * length;
-  double walked = 0;
-  for (size_t i = 0; i + 1 < points.size(); ++i) {
-    const double step = (points[i + 1] - points[i]).norm();
-    if (walked + step >= goal && step > 0) return points[i] + (goal - walked) / step * (points[i + 1] - points[i]);
-    walked += step;
-  }
-  return points.back();
-}
 
 /// Each hair particle's arc fraction along its strand (equal arcs: i / (n - 1)).
 double fraction_of(int32_t i, int32_t hairs) { return hairs > 1 ? double(i) / (hairs - 1) : 0.0; }
@@ -99,7 +86,7 @@ BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
     const AltitudeStrand& model = running[g].model;
     std::vector<Vec3> line;
     for (int32_t q : model.hair_particle) line.push_back(model.rest_m[static_cast<size_t>(q)]);
-    return at_fraction(line, fraction);
+    return point_at_arc_fraction(line, fraction);
   };
   auto spread = [&](const std::vector<size_t>& members, double fraction) {
     Vec3 mean = Vec3::Zero();

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "hair/geom/polyline.h"
+
 namespace hair {
 
 std::vector<GuideDrift> guide_drift(const SimulatedGuides& guides) {
@@ -55,26 +57,6 @@ DriftSummary summarise_drift(const std::vector<GuideDrift>& drift) {
   return summary;
 }
 
-namespace {
-
-/// The point at `fraction` of the arc length of the polyline of rows [begin, end) of
-/// frame `frame` (through `at`).
-template <typename At>
-Eigen::Vector3d point_along(At&& at, int32_t frame, int64_t begin, int64_t end, double fraction) {
-  double length = 0;
-  for (int64_t row = begin; row + 1 < end; ++row) length += (at(frame, row + 1) - at(frame, row)).norm();
-  double goal = fraction * length, walked = 0;
-  for (int64_t row = begin; row + 1 < end; ++row) {
-    const Eigen::Vector3d a = at(frame, row), b = at(frame, row + 1);
-    const double step = (b - a).norm();
-    if (walked + step >= goal && step > 0) return a + (goal - walked) / step * (b - a);
-    walked += step;
-  }
-  return at(frame, end - 1);
-}
-
-}  // namespace
-
 BundleSpread bundle_spread(const SimulatedGuides& guides, int32_t cluster, double fraction) {
   BundleSpread spread;
   const StrandSet& rest = guides.rest;
@@ -100,12 +82,16 @@ BundleSpread bundle_spread(const SimulatedGuides& guides, int32_t cluster, doubl
       members.push_back(g);
   spread.guides = static_cast<int64_t>(members.size());
   if (members.size() < 2) return spread;
+  std::vector<Eigen::Vector3d> line;
   auto spread_at = [&](int32_t frame) {
     std::vector<Eigen::Vector3d> sample;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int64_t g : members) {
-      sample.push_back(point_along(at, frame, rest.offsets[static_cast<size_t>(g)],
-                                   rest.offsets[static_cast<size_t>(g) + 1], fraction));
+      line.clear();
+      for (int64_t row = rest.offsets[static_cast<size_t>(g)];
+           row < rest.offsets[static_cast<size_t>(g) + 1]; ++row)
+        line.push_back(at(frame, row));
+      sample.push_back(point_at_arc_fraction(line, fraction));
       mean += sample.back();
     }
     mean /= static_cast<double>(sample.size());
