@@ -14,13 +14,13 @@
 # (the 10,000-frame run's, default ponytail01), LONG_FRAMES (default 10000), QUICK=1 (only
 # ponytail01, no synthetic model, fewer steps and motions, 1,000 frames; about a minute).
 #
-# A run is *stable* when (bench/stability_stats.py):
+# A run is *stable* when (hair-sim-report --stability, common/hair/sim/run_stability.h):
 #   - it finishes (simulate aborts on a non-finite position or velocity, or one beyond
 #     1000 H) and every guide point and per-frame energy in guides.h5 is finite;
 #   - the largest hair stretch is within 0.011 (the 1% limit, and a tenth of it);
 #   - at most 5% of the hair particles are left inside the body at any frame's end;
 #   - the springs' deformation, sqrt(2 E / (k M)) for the largest elastic energy E, the
-#     edge stiffness per kg k and the simulated hair's mass M (wisps by the strands they
+#     hair segments' stiffness per kg k and the simulated hair's mass M (wisps by the strands they
 #     carry), stays within 0.05 H: a root mean square of how far the springs are from
 #     their rest lengths, whatever their stiffness (the elastic energy grows with the
 #     stiffness at the same deformation);
@@ -51,9 +51,8 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/stability.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
 source bench/common.sh
-copy_binaries stability "$work" extract typeify cluster-middle cluster-all grow classify simulate hair-synth
+copy_binaries stability "$work" extract typeify cluster-middle cluster-all grow classify simulate hair-synth hair-sim-report
 bin=$work/bin
-stats=bench/stability_stats.py
 bench_start=$(date +%s)
 
 # prepare NAME MESH BODY: the pipeline up to styles.h5 in $work/NAME.
@@ -71,13 +70,13 @@ fi
 [[ " ${names[*]} " == *" $long_model "* ]] || prepare "$long_model" "$makehuman/hair/$long_model.obj" "$makehuman/body.obj"
 
 # run NAME OUT ARGS...: simulate NAME's model into OUT with ARGS; prints the figures of
-# stability_stats.py, or "aborted" when simulate failed.
+# hair-sim-report --stability, or "aborted" when simulate failed.
 run() {
   local name=$1 out=$2 dir=$work/$1
   shift 2
   if "$bin/simulate" "$dir/extract.h5" "$dir/strands.h5" "$dir/styles.h5" --params "$params/simulate.toml" \
     --quiet --threads "$threads" -o "$out" "$@" 2> "$out.log"; then
-    /usr/bin/python3 "$stats" "$out"
+    "$bin/hair-sim-report" --stability "$out"
   else
     echo "- - - - - - - - - - - - - aborted"
   fi
@@ -196,35 +195,30 @@ echo "| model | frames | $header |"
 echo "|---|---:|$rule|"
 echo "| $long_model | ${figures%% *} | $(row "$figures") |"
 echo
-/usr/bin/python3 - "$work/long.h5" << 'EOF'
-import sys
-import h5py
-import numpy as np
-with h5py.File(sys.argv[1], "r") as f:
-    frames = f["frames"]
-    kinetic = frames["kinetic_energy_j"][()]
-    total = kinetic + frames["elastic_energy_j"][()] + frames["gravity_energy_j"][()]
-    fps = f.attrs["fps"]
-cycle = int(round(2 * fps))  # the shake's natural duration: three of its cycles
-n = len(total)
-windows = [("first cycle after the ramp (frames 60-119)", slice(cycle, 2 * cycle))]
-for share in (0.25, 0.5, 0.75):
-    at = int(n * share) // cycle * cycle
-    windows.append((f"frames {at}-{at + cycle - 1}", slice(at, at + cycle)))
-windows.append((f"last full cycle (frames {(n - 1) // cycle * cycle - cycle}-{(n - 1) // cycle * cycle - 1})",
-                slice((n - 1) // cycle * cycle - cycle, (n - 1) // cycle * cycle)))
-print("| window (2 s) | mean total energy (J) | largest total energy (J) | mean kinetic energy (J) | largest kinetic energy (J) |")
-print("|---|---:|---:|---:|---:|")
-for label, window in windows:
-    print(f"| {label} | {total[window].mean():.4f} | {total[window].max():.4f} | "
-          f"{kinetic[window].mean():.4f} | {kinetic[window].max():.4f} |")
-first = total[cycle:2 * cycle].mean()
-last = total[windows[-1][1]].mean()
-print()
-print(f"Total energy: first frame {total[0]:.4f} J, last {total[-1]:.4f} J, largest {total.max():.4f} J "
-      f"(frame {int(total.argmax())}); mean over the last full cycle / over the first after the ramp: "
-      f"{last / first:.3f} (drift {100 * (last - first) / abs(first):+.1f}%).")
-EOF
+fps=$(h5dump -a /fps "$work/long.h5" | sed -n 's/^ *(0): *//p' | head -n 1)
+"$bin/hair-sim-report" --energies "$work/long.h5" | awk -v fps="$fps" '
+  { kinetic[NR - 1] = $2; total[NR - 1] = $5; n = NR }
+  function window(label, from, to,   i, sum, most, ksum, kmost) {
+    sum = 0; most = -1e300; ksum = 0; kmost = -1e300
+    for (i = from; i < to; ++i) { sum += total[i]; ksum += kinetic[i]
+      if (total[i] > most) most = total[i]; if (kinetic[i] > kmost) kmost = kinetic[i] }
+    printf "| %s | %.4f | %.4f | %.4f | %.4f |\n", label, sum / (to - from), most, ksum / (to - from), kmost
+    return sum / (to - from)
+  }
+  END {
+    cycle = int(2 * fps + 0.5)  # the shake natural duration: three of its cycles
+    print "| window (2 s) | mean total energy (J) | largest total energy (J) | mean kinetic energy (J) | largest kinetic energy (J) |"
+    print "|---|---:|---:|---:|---:|"
+    first = window("first cycle after the ramp (frames " cycle "-" 2 * cycle - 1 ")", cycle, 2 * cycle)
+    split("0.25 0.5 0.75", shares, " ")
+    for (s = 1; s <= 3; ++s) { at = int(int(n * shares[s]) / cycle) * cycle
+      window("frames " at "-" at + cycle - 1, at, at + cycle) }
+    end_at = int((n - 1) / cycle) * cycle
+    last = window("last full cycle (frames " end_at - cycle "-" end_at - 1 ")", end_at - cycle, end_at)
+    most = -1e300; arg = 0
+    for (i = 0; i < n; ++i) if (total[i] > most) { most = total[i]; arg = i }
+    printf "\nTotal energy: first frame %.4f J, last %.4f J, largest %.4f J (frame %d); mean over the last full cycle / over the first after the ramp: %.3f (drift %+.1f%%).\n", total[0], total[n - 1], most, arg, last / first, 100 * (last - first) / (first < 0 ? -first : first)
+  }'
 echo
 times > "$work/times"
 cpu=$(tail -n 1 "$work/times" | awk '{ gsub(/[ms]/, " "); print $1 * 60 + $2 + $3 * 60 + $4 }')

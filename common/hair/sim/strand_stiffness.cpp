@@ -238,8 +238,9 @@ StrandStiffness::StrandStiffness(const StrandMaterial& material,
 }
 
 double StrandStiffness::bending_rigidity_n_m2(double strand_count) const {
-  const double fibres = fibres_ * strand_count;
-  return fibres * (1 + cohesion_ * (fibres - 1)) * fibre_.bending_rigidity_n_m2();
+  // Each strand a lock; strands side by side (a wisp's) add their locks' rigidities, as
+  // their masses add: the cohesion binds the hairs of a lock, not the locks of a braid.
+  return strand_count * fibres_ * (1 + cohesion_ * (fibres_ - 1)) * fibre_.bending_rigidity_n_m2();
 }
 
 double StrandStiffness::mass_per_length_kg_m(double strand_count) const {

@@ -69,7 +69,8 @@ class StrandStiffness {
   explicit StrandStiffness(const StrandMaterial& material,
                            const AltitudeStrandOptions& options = {});
 
-  /// The lock's bending rigidity, N m^2, for `strand_count` strands' fibres.
+  /// The bending rigidity, N m^2, of `strand_count` locks side by side (a wisp's centre
+  /// stands for its strands): strand_count N (1 + cohesion (N - 1)) E I.
   double bending_rigidity_n_m2(double strand_count = 1) const;
 
   /// Mass per metre of a strand carrying `strand_count` strands' fibres.
