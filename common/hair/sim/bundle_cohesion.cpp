@@ -25,23 +25,25 @@ double fraction_of(int32_t i, int32_t hairs) { return hairs > 1 ? double(i) / (h
 constexpr int kCentreSamples = 32;
 template <typename PositionOf>
 void sample_fractions(PositionOf&& position_of, size_t g, int32_t hairs, Vec3* samples) {
+  if (hairs < 2) {
+    for (int k = 0; k < kCentreSamples; ++k) samples[k] = position_of(g, 0);
+    return;
+  }
   double length = 0;
   for (int32_t i = 0; i + 1 < hairs; ++i) length += (position_of(g, i + 1) - position_of(g, i)).norm();
   int32_t segment = 0;
-  double walked = 0;
+  Vec3 a = position_of(g, 0), b = position_of(g, 1);
+  double step = (b - a).norm(), walked = 0;
   for (int k = 0; k < kCentreSamples; ++k) {
     const double goal = length * k / (kCentreSamples - 1);
-    samples[k] = position_of(g, hairs - 1);
-    while (segment + 1 < hairs) {
-      const Vec3 a = position_of(g, segment), b = position_of(g, segment + 1);
-      const double step = (b - a).norm();
-      if (walked + step >= goal && step > 0) {
-        samples[k] = a + (goal - walked) / step * (b - a);
-        break;
-      }
+    while (walked + step < goal && segment + 2 < hairs) {
       walked += step;
       ++segment;
+      a = b;
+      b = position_of(g, segment + 1);
+      step = (b - a).norm();
     }
+    samples[k] = step > 0 ? Vec3(a + std::clamp((goal - walked) / step, 0.0, 1.0) * (b - a)) : b;
   }
 }
 
@@ -54,25 +56,6 @@ Vec3 centre_at(const std::vector<Vec3>& centre, double fraction) {
 }
 
 }  // namespace
-
-template <typename PositionOf>
-void BundleCohesion::centre_line(const Bundle& bundle, const std::vector<RunningStrand>& running,
-                                 PositionOf&& position_of, std::vector<Vec3>& samples,
-                                 std::vector<Vec3>& centre) const {
-  const auto members = static_cast<int64_t>(bundle.members.size());
-  samples.resize(static_cast<size_t>(members) * kCentreSamples);
-#pragma omp parallel for schedule(static) if (members >= 64)
-  for (int64_t m = 0; m < members; ++m) {
-    const size_t g = bundle.members[static_cast<size_t>(m)];
-    sample_fractions(position_of, g, running[g].model.hair_count(),
-                     samples.data() + m * kCentreSamples);
-  }
-  centre.assign(kCentreSamples, Vec3::Zero());
-  for (int64_t m = 0; m < members; ++m)  // in member order: deterministic
-    for (int k = 0; k < kCentreSamples; ++k)
-      centre[static_cast<size_t>(k)] += samples[static_cast<size_t>(m * kCentreSamples + k)];
-  for (Vec3& point : centre) point /= static_cast<double>(members);
-}
 
 BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
                                const std::vector<RunningStrand>& running, double stiffness_per_s2,
@@ -114,8 +97,12 @@ BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
       const AltitudeStrand& model = running[g].model;
       return model.rest_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
     };
-    std::vector<Vec3> samples, centre;
-    centre_line(bundle, running, rest, samples, centre);
+    std::vector<Vec3> centre(kCentreSamples, Vec3::Zero()), samples(kCentreSamples);
+    for (size_t g : members) {  // in member order: deterministic
+      sample_fractions(rest, g, running[g].model.hair_count(), samples.data());
+      for (int k = 0; k < kCentreSamples; ++k) centre[static_cast<size_t>(k)] += samples[static_cast<size_t>(k)];
+    }
+    for (Vec3& point : centre) point /= static_cast<double>(members.size());
     for (size_t m = 0; m < members.size(); ++m) {
       std::vector<double> radius;
       const int32_t hairs = running[members[m]].model.hair_count();
@@ -123,8 +110,13 @@ BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
         radius.push_back((rest(members[m], i) - centre_at(centre, fraction_of(i, hairs))).norm());
       bundle.rest_radius_m.push_back(std::move(radius));
     }
-    member_.resize(running.size(), 0);
-    for (size_t g : bundle.members) member_[g] = 1;
+    bundle.centre = std::move(centre);
+    bundle_of_.resize(running.size(), -1);
+    slot_of_.resize(running.size(), -1);
+    for (size_t m = 0; m < bundle.members.size(); ++m) {
+      bundle_of_[bundle.members[m]] = static_cast<int32_t>(bundles_.size());
+      slot_of_[bundle.members[m]] = static_cast<int32_t>(m);
+    }
     bundles_.push_back(std::move(bundle));
   }
 }
@@ -135,33 +127,61 @@ int64_t BundleCohesion::guide_count() const {
   return count;
 }
 
-void BundleCohesion::accelerations(const std::vector<RunningStrand>& running,
-                                   std::vector<std::vector<Vec3>>& acceleration_m_s2) const {
-  if (!active()) return;
-  auto now = [&](size_t g, int32_t i) {
-    const AltitudeStrand& model = running[g].model;
-    return running[g].state.position_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
+double BundleCohesion::stiffness_for_step(double dt_s) const {
+  if (!(dt_s > 0)) return stiffness_per_s2_;
+  return std::min(stiffness_per_s2_, 1.0 / (dt_s * dt_s));
+}
+
+void BundleCohesion::sample(size_t g, const std::vector<RunningStrand>& running) {
+  if (!member(g)) return;
+  auto now = [&](size_t strand, int32_t i) -> const Vec3& {
+    const AltitudeStrand& model = running[strand].model;
+    return running[strand].state.position_m[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])];
   };
-  for (const Bundle& bundle : bundles_) {
-    centre_line(bundle, running, now, samples_, centre_);
-    const auto members = static_cast<int64_t>(bundle.members.size());
-#pragma omp parallel for schedule(static) if (members >= 64)
-    for (int64_t m = 0; m < members; ++m) {
-      const size_t g = bundle.members[static_cast<size_t>(m)];
-      const AltitudeStrand& model = running[g].model;
-      acceleration_m_s2[g].assign(model.rest_m.size(), Vec3::Zero());
-      const int32_t hairs = model.hair_count();
-      for (int32_t i = 0; i < hairs; ++i) {
-        const auto q = static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)]);
-        if (static_cast<int32_t>(q) < model.kinematic_count) continue;
-        const Vec3 off = now(g, i) - centre_at(centre_, fraction_of(i, hairs));
-        const double radius = off.norm();
-        const double excess = radius - bundle.rest_radius_m[static_cast<size_t>(m)][static_cast<size_t>(i)];
-        if (!(excess > 0) || !(radius > 0)) continue;
-        acceleration_m_s2[g][q] -= (stiffness_per_s2_ * excess / radius) * off;
-      }
-    }
+  sample_fractions(now, g, running[g].model.hair_count(), samples_.data() + g * kCentreSamples);
+}
+
+void BundleCohesion::sample_all(const std::vector<RunningStrand>& running) {
+  samples_.resize(running.size() * kCentreSamples);
+  for (size_t g = 0; g < running.size(); ++g) sample(g, running);
+}
+
+void BundleCohesion::update_centres() {
+  for (Bundle& bundle : bundles_) {
+    bundle.centre.assign(kCentreSamples, Vec3::Zero());
+    for (size_t g : bundle.members)  // in member order: deterministic
+      for (size_t k = 0; k < kCentreSamples; ++k) bundle.centre[k] += samples_[g * kCentreSamples + k];
+    for (Vec3& point : bundle.centre) point /= static_cast<double>(bundle.members.size());
   }
+}
+
+void BundleCohesion::acceleration(size_t g, const std::vector<RunningStrand>& running,
+                                  double dt_s, std::vector<Vec3>& acceleration_m_s2) const {
+  const AltitudeStrand& model = running[g].model;
+  acceleration_m_s2.assign(model.rest_m.size(), Vec3::Zero());
+  if (!active() || !member(g)) return;
+  const Bundle& bundle = bundles_[static_cast<size_t>(bundle_of_[g])];
+  const std::vector<double>& rest_radius = bundle.rest_radius_m[static_cast<size_t>(slot_of_[g])];
+  const double stiffness_per_s2 = stiffness_for_step(dt_s);
+  const int32_t hairs = model.hair_count();
+  for (int32_t i = 0; i < hairs; ++i) {
+    const auto q = static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)]);
+    if (static_cast<int32_t>(q) < model.kinematic_count) continue;
+    const Vec3 off = running[g].state.position_m[q] - centre_at(bundle.centre, fraction_of(i, hairs));
+    const double radius = off.norm();
+    const double excess = radius - rest_radius[static_cast<size_t>(i)];
+    if (!(excess > 0) || !(radius > 0)) continue;
+    acceleration_m_s2[q] -= (stiffness_per_s2 * excess / radius) * off;
+  }
+}
+
+void BundleCohesion::accelerations(const std::vector<RunningStrand>& running, double dt_s,
+                                   std::vector<std::vector<Vec3>>& acceleration_m_s2) {
+  if (!active()) return;
+  sample_all(running);
+  update_centres();
+  for (size_t g = 0; g < running.size(); ++g)
+    if (member(g)) acceleration(g, running, dt_s, acceleration_m_s2[g]);
 }
 
 }  // namespace hair

@@ -28,14 +28,36 @@ class BundleCohesion {
                  int min_guides = 3);
 
   /// The cohesion's acceleration of every particle of the bundles' strands (ghosts get
-  /// none), from their positions now: written into `acceleration_m_s2[g]` for each
-  /// member g (sized to its particles; the others are left alone).
-  void accelerations(const std::vector<RunningStrand>& running,
-                     std::vector<std::vector<Eigen::Vector3d>>& acceleration_m_s2) const;
+  /// none), from their positions now, for a step of `dt_s`: written into
+  /// `acceleration_m_s2[g]` for each member g (sized to its particles; the others are left
+  /// alone). The spring is explicit, so its stiffness is held to at most 1 / dt^2
+  /// (`stiffness_for_step`). The same as sample_all(), update_centres() and
+  /// acceleration() for each member.
+  void accelerations(const std::vector<RunningStrand>& running, double dt_s,
+                     std::vector<std::vector<Eigen::Vector3d>>& acceleration_m_s2);
+
+  /// The step's pieces, for a loop that steps the strands in parallel: sample(g) records
+  /// member g's polyline at its positions now (any member on any thread, each once);
+  /// update_centres() then makes each bundle's centre line of them (serial, cheap);
+  /// acceleration(g) gives member g's cohesion against it (any thread). Not a member:
+  /// sample() does nothing, acceleration() gives zeros.
+  void sample(size_t g, const std::vector<RunningStrand>& running);
+  void sample_all(const std::vector<RunningStrand>& running);
+  void update_centres();
+  void acceleration(size_t g, const std::vector<RunningStrand>& running, double dt_s,
+                    std::vector<Eigen::Vector3d>& acceleration_m_s2) const;
+
+  /// The stiffness per kg used for a step of `dt_s`: the set one, but at most 1 / dt^2.
+  /// A spring applied explicitly (from the positions at the start of the step) in the
+  /// semi-implicit Euler step is stable while k dt^2 < 4, undamped; held to k dt^2 <= 1
+  /// it keeps a margin for the other forces and pulls a stray particle at most all the
+  /// way back in one step, never past the centre. At the default 1/60 s step (k dt^2 =
+  /// 0.44 for 1600/s^2) it is the set stiffness.
+  double stiffness_for_step(double dt_s) const;
 
   bool active() const { return stiffness_per_s2_ > 0 && !bundles_.empty(); }
   /// Whether running strand `g` belongs to a bundle (only those get accelerations).
-  bool member(size_t g) const { return g < member_.size() && member_[g] != 0; }
+  bool member(size_t g) const { return g < bundle_of_.size() && bundle_of_[g] >= 0; }
   int64_t bundle_count() const { return static_cast<int64_t>(bundles_.size()); }
   int64_t guide_count() const;
 
@@ -45,19 +67,15 @@ class BundleCohesion {
     std::vector<size_t> members;  ///< running strand indices
     /// Per member, per hair particle: its rest distance from the rest centre line.
     std::vector<std::vector<double>> rest_radius_m;
+    std::vector<Eigen::Vector3d> centre;  ///< the centre line now (update_centres())
   };
-  /// The centre line of `bundle` at kCentreSamples arc fractions (the mean of its
-  /// members' polylines there), from positions `position_of(member, hair particle)`, into
-  /// `centre`; `samples` is scratch (members x samples).
-  template <typename PositionOf>
-  void centre_line(const Bundle& bundle, const std::vector<RunningStrand>& running,
-                   PositionOf&& position_of, std::vector<Eigen::Vector3d>& samples,
-                   std::vector<Eigen::Vector3d>& centre) const;
 
   double stiffness_per_s2_ = 0;
   std::vector<Bundle> bundles_;
-  std::vector<uint8_t> member_;  ///< per running strand
-  mutable std::vector<Eigen::Vector3d> samples_, centre_;  ///< scratch of accelerations()
+  std::vector<int32_t> bundle_of_;  ///< per running strand: its bundle, or -1
+  std::vector<int32_t> slot_of_;    ///< per running strand: its index among the members
+  /// Per running strand (members only): its polyline at kCentreSamples arc fractions.
+  std::vector<Eigen::Vector3d> samples_;
 };
 
 }  // namespace hair

@@ -55,7 +55,6 @@ void SimulationLoop::start() {
   result_.wisp_frames.assign(
       static_cast<size_t>(result_.frame_count) * static_cast<size_t>(tetrahedra_) * 7, 0.0f);
 
-  cohesion_m_s2_.assign(running_.size(), {});
   applied_m_s2_.assign(running_.size(), {});
 
   // Start: the rest shape where the head is at time 0, at rest.
@@ -75,6 +74,7 @@ void SimulationLoop::start() {
     for (int32_t q : strand.model.hair_particle)
       rest_positions.push_back(strand.model.rest_m[static_cast<size_t>(q)]);
   rest_density_.build(rest_positions);
+  if (cohesion_.active()) cohesion_.sample_all(running_);  // the first step's centre lines
   reference_density_ = rest_density_.mean_occupied_density();
 
   record_frame(0, head);
@@ -130,9 +130,10 @@ void SimulationLoop::integrate_frame(int32_t frame, const RigidTransform& pose) 
       gather_hair();
       density_.build(hair_positions_);
     }
-    // The tails' cohesion from the positions at the start of each step (explicit: held
-    // over a frame, a stiff one would not be stable).
-    if (cohesion_.active()) cohesion_.accelerations(running_, cohesion_m_s2_);
+    // The tails' cohesion from the positions at the start of each step (explicit, its
+    // stiffness held to 1 / dt^2 so that a long step stays stable): the centre lines of
+    // the members' polylines, which each strand sampled at the end of its last step.
+    if (cohesion_.active()) cohesion_.update_centres();
     // A few guides are not worth a thread team's barrier per step (on a busy machine a
     // barrier can wait out another process's time slice).
 #pragma omp parallel for schedule(dynamic, 4) if (running_.size() >= 32)
@@ -178,10 +179,10 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
     StrandStepper& stepper = steppers_[static_cast<size_t>(omp_get_thread_num())];
     const Eigen::Matrix3d head_rotation = to.rotation.toRotationMatrix();
     const std::vector<Vec3>* acceleration = &strand.acceleration_m_s2;
-    if (cohesion_.member(g)) {
+    if (cohesion_.active() && cohesion_.member(g)) {
       std::vector<Vec3>& applied = applied_m_s2_[g];
-      applied = strand.acceleration_m_s2;
-      for (size_t k = 0; k < applied.size(); ++k) applied[k] += cohesion_m_s2_[g][k];
+      cohesion_.acceleration(g, running_, dt_s_, applied);
+      for (size_t k = 0; k < applied.size(); ++k) applied[k] += strand.acceleration_m_s2[k];
       acceleration = &applied;
     }
     stepper.step(model, params_.material, *acceleration, gravity_, strand.anchors, dt_s_,
@@ -193,6 +194,7 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
       auto k = static_cast<size_t>(q);
       x[k] = to.apply(model.rest_m[k]);
     }
+    if (cohesion_.active()) cohesion_.sample(g, running_);  // for the next step's centre
     // Not finite, or diverged so far that it soon will be.
     const Vec3 centre = to.translation_m;
     for (size_t k = 0; k < x.size(); ++k)

@@ -80,9 +80,8 @@ class SimulationLoop {
   std::vector<Eigen::Vector3d> hair_positions_;
   std::vector<StrandStepper> steppers_;  ///< one per thread
   BundleCohesion cohesion_;              ///< tails that hold together
-  /// Per strand: the cohesion's accelerations (worked out at each frame's start), and what
-  /// a step applies (repulsion and cohesion summed).
-  std::vector<std::vector<Eigen::Vector3d>> cohesion_m_s2_, applied_m_s2_;
+  /// Per strand: what a bundle member's step applies (repulsion and cohesion summed).
+  std::vector<std::vector<Eigen::Vector3d>> applied_m_s2_;
   RigidTransform previous_;              ///< the head at the last step's end
   std::vector<StrandShare> shares_;
   std::vector<double> spring_j_;

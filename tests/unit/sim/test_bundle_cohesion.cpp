@@ -68,9 +68,9 @@ TEST(BundleCohesion, AGatheredClusterIsABundleALooseOneIsNot) {
 
 TEST(BundleCohesion, DrawsBackOnlyWhatStraysFartherThanAtRest) {
   Guides g = make_guides(tail(0.05, 0.01));
-  const BundleCohesion cohesion(g.guides, g.running, 1600);
+  BundleCohesion cohesion(g.guides, g.running, 1600);
   std::vector<std::vector<Vec3>> acceleration(g.running.size());
-  cohesion.accelerations(g.running, acceleration);
+  cohesion.accelerations(g.running, 1.0 / 60, acceleration);
   for (const auto& strand : acceleration)
     for (const Vec3& a : strand) EXPECT_LT(a.norm(), 1e-9);  // at rest: nothing
   // Strand 0's tip swung 5 cm out: drawn back towards the others, at 1600/s^2 times
@@ -78,13 +78,35 @@ TEST(BundleCohesion, DrawsBackOnlyWhatStraysFartherThanAtRest) {
   AltitudeStrand& model = g.running[0].model;
   const auto tip = static_cast<size_t>(model.hair_particle.back());
   g.running[0].state.position_m[tip] += Vec3(0.05, 0, 0);
-  cohesion.accelerations(g.running, acceleration);
+  cohesion.accelerations(g.running, 1.0 / 60, acceleration);
   EXPECT_LT(acceleration[0][tip].x(), -0.5 * 1600 * 0.03);
   EXPECT_GT(acceleration[0][tip].x(), -1600 * 0.06);
   // Swung 1 cm in instead: closer to the centre than at rest, left alone.
   g.running[0].state.position_m[tip] -= Vec3(0.06, 0, 0);
-  cohesion.accelerations(g.running, acceleration);
+  cohesion.accelerations(g.running, 1.0 / 60, acceleration);
   EXPECT_LT(acceleration[0][tip].norm(), 1e-9);
+}
+
+TEST(BundleCohesion, ALongStepNeverThrowsAStrayParticlePastWhereItBelongs) {
+  Guides g = make_guides(tail(0.05, 0.01));
+  BundleCohesion cohesion(g.guides, g.running, 1600);
+  EXPECT_DOUBLE_EQ(cohesion.stiffness_for_step(1.0 / 60), 1600);  // the default step: as set
+  EXPECT_DOUBLE_EQ(cohesion.stiffness_for_step(0.25), 16);        // 1 / dt^2
+  // Strand 0's tip 5 cm out, at rest; one semi-implicit Euler step of 250 ms with the
+  // cohesion alone brings it back at most to its rest distance from the centre line, where
+  // the set 1600/s^2 would throw it 100 times the excess the other way.
+  AltitudeStrand& model = g.running[0].model;
+  const auto tip = static_cast<size_t>(model.hair_particle.back());
+  const Vec3 rest = g.running[0].state.position_m[tip];
+  g.running[0].state.position_m[tip] += Vec3(0.05, 0, 0);
+  std::vector<std::vector<Vec3>> acceleration(g.running.size());
+  const double dt_s = 0.25;
+  cohesion.accelerations(g.running, dt_s, acceleration);
+  const Vec3 moved = acceleration[0][tip] * dt_s * dt_s;
+  EXPECT_LT(moved.x(), -0.02);            // drawn back by a good part of the excess
+  EXPECT_GT(moved.x(), -0.05 - 1e-12);    // but not past where it was at rest
+  EXPECT_LT(std::abs(moved.y()) + std::abs(moved.z()), 0.05);
+  (void)rest;
 }
 
 /// Guides `rest` over `frames` frames: the head yawed by 10 degrees a frame and the
