@@ -16,6 +16,13 @@ using Vec3 = Eigen::Vector3d;
 /// this share as spread as at their roots.
 constexpr double kGatheredSpreadRatio = 0.6;
 
+/// Or where they pass, each somewhere along its length, this close to one point (their
+/// waist) against their spread at the roots: strands of different lengths drawn through
+/// one band (a low tail from the whole scalp), which meet it at different arc fractions.
+/// Loose hair hanging side by side does not converge (long01's long layer: 1.13; a
+/// tail's: 0.14 to 0.25; docs/simulate.md).
+constexpr double kWaistSpreadRatio = 0.4;
+
 /// Each hair particle's arc fraction along its strand (equal arcs: i / (n - 1)).
 double fraction_of(int32_t i, int32_t hairs) { return hairs > 1 ? double(i) / (hairs - 1) : 0.0; }
 
@@ -80,16 +87,49 @@ BundleCohesion::BundleCohesion(const std::vector<SimulatedGuide>& guides,
     for (const Vec3& p : points) sum += (p - mean).squaredNorm();
     return std::sqrt(sum / static_cast<double>(points.size()));
   };
+  // The spread at the members' waist: over every rest hair particle P of the members
+  // beyond the first fifth of its strand, the root mean square of each member's nearest
+  // distance to P, the least of them.
+  auto waist_spread = [&](const std::vector<size_t>& members) {
+    std::vector<std::vector<Vec3>> lines;
+    for (size_t g : members) {
+      const AltitudeStrand& model = running[g].model;
+      std::vector<Vec3> line;
+      for (int32_t q : model.hair_particle) line.push_back(model.rest_m[static_cast<size_t>(q)]);
+      lines.push_back(std::move(line));
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& line : lines)
+      for (size_t i = line.size() / 5; i < line.size(); ++i) {
+        double sum = 0;
+        for (const auto& other : lines) {
+          double nearest = std::numeric_limits<double>::infinity();
+          for (size_t j = 0; j + 1 < other.size(); ++j) {
+            const Vec3 d = other[j + 1] - other[j];
+            const double t = d.squaredNorm() > 0 ? std::clamp((line[i] - other[j]).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+            nearest = std::min(nearest, (other[j] + t * d - line[i]).squaredNorm());
+          }
+          sum += nearest;
+        }
+        best = std::min(best, std::sqrt(sum / static_cast<double>(lines.size())));
+      }
+    return best;
+  };
   for (const auto& [cluster, members] : by_cluster) {
     if (static_cast<int>(members.size()) < min_guides) continue;
     // Gathered: hanging from fixed hair (a band), or somewhere along their middle (a fifth
     // to four fifths of their length) at most kGatheredSpreadRatio as spread as at their
-    // roots (a tail whose strands run from the scalp through a band).
+    // roots (a tail whose strands run from the scalp through a band), or passing close to
+    // one point somewhere along their lengths (their waist: a band they meet at different
+    // arc fractions).
     bool from_band = true;
     for (size_t g : members) from_band = from_band && guides[g].anchor_point > 0;
     double narrowest = std::numeric_limits<double>::infinity();
     for (int k = 0; k <= 12; ++k) narrowest = std::min(narrowest, spread(members, 0.2 + 0.05 * k));
-    if (!from_band && !(narrowest <= kGatheredSpreadRatio * spread(members, 0.0))) continue;
+    const double root_spread = spread(members, 0.0);
+    if (!from_band && !(narrowest <= kGatheredSpreadRatio * root_spread) &&
+        !(waist_spread(members) <= kWaistSpreadRatio * root_spread))
+      continue;
     Bundle bundle;
     bundle.cluster = cluster;
     bundle.members = members;

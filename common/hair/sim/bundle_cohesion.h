@@ -2,7 +2,8 @@
 // Tails that hold together: the guides of one simulated cluster that hang from a band
 // (each starts from the end of fixed hair) or that gather (somewhere along their middle
 // at most 0.6 times as spread as at their roots: a ponytail whose strands run from the
-// scalp through the band) are a bundle. Each
+// scalp through the band; or passing close to one point at any arc fraction: a low tail
+// whose strands meet its band at different lengths) are a bundle. Each
 // hair particle is drawn back towards the bundle's centre line where it strays farther
 // from it than at rest, by a one-sided spring per kilogram: the bundle swings and twists
 // as one (its centre line moves freely), its guides do not fan out, and the hair-hair

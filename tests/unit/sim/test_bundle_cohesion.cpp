@@ -32,6 +32,31 @@ std::vector<std::vector<Vec3>> tail(double root_radius_m, double band_radius_m) 
   return strands;
 }
 
+/// Seven strands rooted along the middle of the scalp, from the front hairline over the
+/// crown to the nape (an arc of 216 degrees, radius 9 cm), each drawn straight to one band
+/// behind the nape at (0, -0.1, -0.1) and hanging 10 to 25 cm below it, fanning out by
+/// 1 cm every 2.5 cm: the nearer the front a root, the farther along its strand the band
+/// (a low tail, hair pulled back). With `band` false, they hang straight down from their
+/// roots, fanning out alike.
+std::vector<std::vector<Vec3>> low_tail(bool band) {
+  std::vector<std::vector<Vec3>> strands;
+  const Vec3 band_point(0, -0.1, -0.1);
+  for (int s = 0; s < 7; ++s) {
+    const double angle = std::numbers::pi * (0.1 + 0.2 * s);  // from the front, over the top, to the nape
+    const Vec3 root(0.01 * (s % 2), 0.09 * std::sin(angle), 0.09 * std::cos(angle));
+    std::vector<Vec3> points{root};
+    const Vec3 to_band = band ? band_point : root - Vec3(0, 0.1, 0);
+    const int steps = std::max(1, static_cast<int>(std::ceil((to_band - root).norm() / 0.02)));
+    for (int i = 1; i <= steps; ++i) points.push_back(root + (to_band - root) * i / steps);
+    const double around = 2 * std::numbers::pi * s / 7;
+    const Vec3 fan(std::cos(around), 0, std::sin(around));
+    const int hanging = 4 + s;  // the tail's strands 10 to 25 cm long below the band
+    for (int i = 1; i <= hanging; ++i) points.push_back(to_band - Vec3(0, 0.025 * i, 0) + 0.01 * i * fan);
+    strands.push_back(points);
+  }
+  return strands;
+}
+
 struct Guides {
   std::vector<SimulatedGuide> guides;
   std::vector<RunningStrand> running;
@@ -64,6 +89,16 @@ TEST(BundleCohesion, AGatheredClusterIsABundleALooseOneIsNot) {
   EXPECT_FALSE(BundleCohesion(loose.guides, loose.running, 1600).active());
   // Off.
   EXPECT_FALSE(BundleCohesion(gathered.guides, gathered.running, 0).active());
+}
+
+TEST(BundleCohesion, StrandsThatMeetOneBandAtDifferentLengthsAreABundle) {
+  // At equal arc fractions a low tail's strands are never together (the crown's meet the
+  // band halfway, the nape's at once), but they all pass through the band.
+  const Guides drawn = make_guides(low_tail(true));
+  EXPECT_EQ(BundleCohesion(drawn.guides, drawn.running, 1600).bundle_count(), 1);
+  // The same roots with the hair hanging straight down: loose, not a bundle.
+  const Guides hanging = make_guides(low_tail(false));
+  EXPECT_FALSE(BundleCohesion(hanging.guides, hanging.running, 1600).active());
 }
 
 TEST(BundleCohesion, DrawsBackOnlyWhatStraysFartherThanAtRest) {
