@@ -39,10 +39,10 @@ int main(int argc, char** argv) {
                  result.strands.point_count(), result.head.head_height, scalp_triangles);
     spdlog::info(
         "{}: orientation rules: vertex_order {}, scalp_distance {}, continuation {}, uv {}, "
-        "height {}, parting {}, alpha_fade {}",
+        "height {}, parting {}, alpha_fade {} ({} regions' vertex ids overruled by their paint)",
         hair_path, stats.groups_by_rule[0], stats.groups_by_rule[1], stats.groups_by_rule[2],
         stats.groups_by_rule[3], stats.groups_by_rule[4], stats.groups_by_rule[5],
-        stats.groups_by_rule[6]);
+        stats.groups_by_rule[6], stats.paint_overruled_ids);
     spdlog::info(
         "{}: rails chosen by chain length in {} regions, texture axis {}, painted flow {} "
         "({} of them across the longer chains); {} patches traced along the paint",

@@ -450,6 +450,49 @@ std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& f
   return regions;
 }
 
+/// Where a region's vertex ids decided its direction but its paint says the other way
+/// twice over, the paint wins. Twice over: its painted alpha fades out decisively
+/// towards the other end, and its texture's v runs towards that end as the mesh's texture
+/// does on its other painted regions (on at least `min_agreement` of the regions whose
+/// fade and v growth are both decisive, v grows towards the fade, or on as many against
+/// it). Vertex ids are an accident of how a card was modelled (one extruded from its
+/// tip, or turned round, numbers tip to root); the texture is laid and painted on purpose,
+/// one image for many cards. A mesh whose cards fade at either end (some at the root, to
+/// soften a hairline) has no such convention, and its ids stay. Returns how many regions
+/// it turned.
+int paint_overrules_ids(std::vector<RegionRails>& regions, const OrientationThresholds& thresholds,
+                        double min_agreement) {
+  auto fade_decides = [&](const OrientationEvidence& e) {
+    return e.alpha_fade_vote && e.alpha_fade_mean_fall >= thresholds.alpha_fade_min_fall &&
+           std::abs(*e.alpha_fade_vote) >= thresholds.alpha_fade_min_vote && e.uv_growth &&
+           std::abs(*e.uv_growth) >= thresholds.uv_min_growth;
+  };
+  // v grows towards the fade (the tips) when the alpha falls along the rails (vote > 0)
+  // and v grows along them, or both run the other way.
+  auto v_grows_to_fade = [](const OrientationEvidence& e) {
+    return (*e.uv_growth > 0) == (*e.alpha_fade_vote > 0);
+  };
+  std::vector<bool> towards;
+  for (const RegionRails& region : regions)
+    if (fade_decides(region.evidence)) towards.push_back(v_grows_to_fade(region.evidence));
+  const std::optional<double> share = share_true(towards);
+  if (!share || (*share < min_agreement && *share > 1 - min_agreement)) return 0;
+  const bool convention = *share >= min_agreement;
+  int turned = 0;
+  for (RegionRails& region : regions) {
+    if (!region.decision || region.decision->rule != OrientationRule::vertex_order) continue;
+    const OrientationEvidence& e = region.evidence;
+    if (!fade_decides(e) || v_grows_to_fade(e) != convention) continue;
+    const bool fade_reverse = *e.alpha_fade_vote < 0;
+    if (fade_reverse == region.decision->reverse) continue;
+    region.decision = OrientationDecision{
+        fade_reverse, OrientationRule::alpha_fade,
+        static_cast<float>(std::min(std::abs(*e.uv_growth), std::abs(*e.alpha_fade_vote)))};
+    ++turned;
+  }
+  return turned;
+}
+
 /// Decides every region's direction: confident regions first, then continuation from
 /// decided neighbours, then the mesh's conventions for the rest.
 void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regions,
@@ -458,6 +501,8 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
   MeshConventions conventions = mesh_conventions(regions, thresholds, params);
   stats.vertex_order_trusted = conventions.trust_vertex_order;
   stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
+  stats.paint_overruled_ids =
+      paint_overrules_ids(regions, thresholds, params.convention_min_agreement);
   decide_by_continuation(vertices, regions,
                          static_cast<float>(params.continuation_radius_h * head_height_m));
   for (RegionRails& region : regions)

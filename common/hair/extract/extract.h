@@ -97,6 +97,8 @@ struct ExtractStats {
   std::array<int64_t, 5> groups_by_kind{};  ///< indexed by PatchKind
   bool vertex_order_trusted = true;
   int uv_growth_sign = 0;  ///< the mesh's texture convention: +1, -1, or 0 for none
+  /// Regions whose vertex ids were overruled by their paint (v and alpha fade agreeing).
+  int64_t paint_overruled_ids = 0;
 };
 
 /// Everything extract.h5 holds (schemas/extract.json), in metres.

@@ -105,6 +105,10 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["braid_period_m"] = c.braid_period_m;
     item["band_gap_m"] = c.band_gap_m;
     item["one_piece_rings"] = c.one_piece_rings;
+    item["bun_radius_m"] = c.bun_radius_m;
+    item["ringlet_radius_m"] = c.ringlet_radius_m;
+    item["ringlet_pitch_m"] = c.ringlet_pitch_m;
+    item["tube_sides"] = c.tube_sides;
     json["components"].push_back(item);
   }
   const DefectSpec& d = spec.defects;
@@ -178,7 +182,8 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
           {"kind", "stream_count", "length_min_m", "length_max_m", "wave_amplitude_m",
            "wavelength_m", "strip_width_m", "azimuth_min_deg", "azimuth_max_deg", "polar_min_deg",
            "polar_max_deg", "band_azimuth_deg", "band_polar_deg", "braid_width_m", "braid_depth_m",
-           "braid_period_m", "band_gap_m", "one_piece_rings"});
+           "braid_period_m", "band_gap_m", "one_piece_rings", "bun_radius_m",
+           "ringlet_radius_m", "ringlet_pitch_m", "tube_sides"});
       ComponentSpec c;
       std::string kind = "normal";
       read_key(item, where, "kind", kind);
@@ -212,6 +217,10 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
       read_key(item, where, "braid_period_m", c.braid_period_m);
       read_key(item, where, "band_gap_m", c.band_gap_m);
       read_key(item, where, "one_piece_rings", c.one_piece_rings);
+      read_key(item, where, "bun_radius_m", c.bun_radius_m);
+      read_key(item, where, "ringlet_radius_m", c.ringlet_radius_m);
+      read_key(item, where, "ringlet_pitch_m", c.ringlet_pitch_m);
+      read_key(item, where, "tube_sides", c.tube_sides);
       spec.components.push_back(c);
     }
   }
@@ -266,6 +275,10 @@ void check_spec(const HairStyleSpec& spec) {
     require_range(where + "braid_depth_m", c.braid_depth_m, 0, 0.1);
     require_range(where + "braid_period_m", c.braid_period_m, 0.01, 1.0);
     require_range(where + "band_gap_m", c.band_gap_m, 0, 0.2);
+    require_range(where + "bun_radius_m", c.bun_radius_m, 0, 0.1);
+    require_range(where + "ringlet_radius_m", c.ringlet_radius_m, 0, 0.05);
+    require_range(where + "ringlet_pitch_m", c.ringlet_pitch_m, 0.005, 0.5);
+    if (c.tube_sides != 0) require_range(where + "tube_sides", c.tube_sides, 3, 32);
   }
   const DefectSpec& d = spec.defects;
   require_range("defects.rails_min", d.rails_min, 2, 8);

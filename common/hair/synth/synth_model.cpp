@@ -133,6 +133,7 @@ struct Stream {
   HairStyle style = HairStyle::normal;
   int component = 0;
   bool trim_tips = true;  // true strands end at slightly different lengths
+  bool tube = false;       // meshed as tubes: the true strands fill the tube's round section
   /// Per point, for hair lying on the scalp (short caps): every point across the stream
   /// is put on the head surface at this lift (on_scalp); empty: a flat strip.
   std::vector<double> scalp_lift_m;
@@ -281,6 +282,24 @@ void add_waves(Stream& stream, double amplitude_m, double wavelength_m, double p
   }
 }
 
+/// Winds the stream round its own curve in a helix of `radius_m` and `pitch_m` per turn
+/// along it (fading in over the first 3 cm, as waves do), a corkscrew ringlet, kept
+/// `clearance_m` off the body; then its arc lengths and frames are measured again.
+void add_ringlet(Stream& stream, const Head& head, double radius_m, double pitch_m, double phase,
+                 double clearance_m) {
+  for (size_t i = 0; i < stream.points.size(); ++i) {
+    double s = stream.along_m[i];
+    double fade = std::min(1.0, s / 0.03);
+    double turn = 2 * kPi * s / pitch_m + phase;
+    stream.points[i] = head.pushed_out(
+        stream.points[i] +
+            fade * radius_m * (std::cos(turn) * stream.across[i] + std::sin(turn) * stream.normal[i]),
+        clearance_m);
+  }
+  measure_arc_length(stream);
+  frame_stream(stream, head);
+}
+
 /// Root directions spread evenly (a Fibonacci lattice) over the component's scalp
 /// region below the hairline, jittered; `count` of them.
 std::vector<Vec3> root_directions(const ComponentSpec& component, int count, Rng& rng) {
@@ -378,7 +397,13 @@ void add_loose_streams(const ComponentSpec& component, int component_index,
     frame_stream(stream, head);
     add_waves(stream, component.wave_amplitude_m, component.wavelength_m, rng.uniform(0, 2 * kPi));
     measure_arc_length(stream);
+    if (component.ringlet_radius_m > 0) {
+      add_ringlet(stream, head, component.ringlet_radius_m * rng.uniform(0.85, 1.15),
+                  component.ringlet_pitch_m * rng.uniform(0.85, 1.15), rng.uniform(0, 2 * kPi),
+                  defects.body_clearance_m);
+    }
     frame_stream(stream, head);
+    stream.tube = component.tube_sides > 0;
     double width = component.strip_width_m * rng.uniform(0.8, 1.2);
     stream.width_m.assign(stream.points.size(), width);
     int pieces = is_short ? 1 : rng.integer(1, defects.normal_pieces_max);
@@ -515,8 +540,38 @@ std::pair<Vec3, Vec3> band_point(const Head& head, const ComponentSpec& componen
   return {surface + 0.012 * outward, outward};
 }
 
+/// A bun's coil for the stream leaving the band at `start_angle` (radians round the band's
+/// outward axis `band_out`, from `side` towards `up`): from 6 mm off the band's centre it
+/// spirals out to `radius_m` over its first half turn and goes on round at that radius,
+/// `length_m` in all, rising off the head by 1 cm a turn so that later turns lie over the
+/// earlier ones, kept `clearance_m` off the body. Streams leaving from all round the band
+/// fill a ring: a bun.
+std::vector<Vec3> bun_coil(const Head& head, const Vec3& band, const Vec3& band_out,
+                           const Vec3& side, const Vec3& up, double start_angle,
+                           double radius_m, double length_m, double clearance_m) {
+  constexpr double kStart_m = 0.006, kRisePerTurn_m = 0.01;
+  std::vector<Vec3> points;
+  double angle = start_angle, along = 0;
+  auto at = [&](double turned) {
+    double r = kStart_m + (radius_m - kStart_m) * std::min(1.0, turned / kPi);
+    double rise = kRisePerTurn_m * turned / (2 * kPi);
+    return Vec3(band + r * (std::cos(angle) * side + std::sin(angle) * up) + rise * band_out);
+  };
+  points.push_back(at(0));
+  while (along < length_m) {
+    double turned = angle - start_angle;
+    double r = kStart_m + (radius_m - kStart_m) * std::min(1.0, turned / kPi);
+    angle += kStep_m / std::max(r, 0.01);
+    Vec3 next = head.pushed_out(at(angle - start_angle), clearance_m);
+    along += (next - points.back()).norm();
+    points.push_back(next);
+  }
+  return points;
+}
+
 /// A ponytail: cap grids from the hairline to a band (fixed), tail strips from the band
-/// (normal), one stream per cap patch, a hidden gap at the band.
+/// (normal), one stream per cap patch, a hidden gap at the band; with a bun radius, the
+/// tails coil round the band (fixed).
 void add_ponytail(const ComponentSpec& component, int component_index, const DefectSpec& defects,
                   const Head& head, Rng& rng, std::vector<Stream>& streams) {
   auto [band, band_out] = band_point(head, component);
@@ -535,9 +590,15 @@ void add_ponytail(const ComponentSpec& component, int component_index, const Def
     double cap_length = stream.length_m();
     double total = rng.uniform(component.length_min_m, component.length_max_m);
     double tail_length = std::max(0.05, total - cap_length);
-    Vec3 tail_start = (band_out + 0.4 * Vec3(0, -1, 0)).normalized();
-    append_points(stream.points, grown_curve(head, cap_end, tail_start, tail_length, 0.05,
-                                             defects.body_clearance_m));
+    if (component.bun_radius_m > 0) {
+      append_points(stream.points, bun_coil(head, band, band_out, side, up, ring_angle,
+                                            component.bun_radius_m, tail_length,
+                                            defects.body_clearance_m));
+    } else {
+      Vec3 tail_start = (band_out + 0.4 * Vec3(0, -1, 0)).normalized();
+      append_points(stream.points, grown_curve(head, cap_end, tail_start, tail_length, 0.05,
+                                               defects.body_clearance_m));
+    }
     measure_arc_length(stream);
     frame_stream(stream, head);
     double root_width = component.strip_width_m * rng.uniform(0.8, 1.2);
@@ -551,10 +612,13 @@ void add_ponytail(const ComponentSpec& component, int component_index, const Def
     Piece cap{0.0, cap_length, HairStyle::fixed, defects.cap_rails};
     stream.pieces.push_back(cap);
     double tail_begin = cap_length + component.band_gap_m;
+    // A bun is held: fixed hair, as the cap; a tail hangs free.
+    const HairStyle tail_style = component.bun_radius_m > 0 ? HairStyle::fixed : HairStyle::normal;
+    if (component.bun_radius_m > 0) stream.style = HairStyle::fixed;
     if (tail_begin < stream.length_m() - 2 * defects.segment_length_m) {
       auto tail =
           cut_pieces(tail_begin, stream.length_m(), rng.integer(1, defects.normal_pieces_max),
-                     HairStyle::normal, defects, rng);
+                     tail_style, defects, rng);
       stream.pieces.insert(stream.pieces.end(), tail.begin(), tail.end());
     }
     streams.push_back(std::move(stream));
@@ -712,6 +776,78 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
   return patch;
 }
 
+/// A piece meshed as a closed tube of `sides` sides round the stream's centre (diameter
+/// the stream's width), as artists model ringlets: vertex (r, c) at row r along the piece
+/// and angle 2 pi c / sides round it, quads between neighbouring rows and sides, the last
+/// side joined to the first. Texture u runs round (0 to 1), v from the piece's root (0) to
+/// its tip (1). Vertex order, triangulation and jitter as build_patch.
+SynthPatch build_tube_patch(const Stream& stream, const Piece& piece, int sides,
+                            const DefectSpec& defects, Rng& rng, std::vector<float>& positions,
+                            PolyMesh& mesh, std::vector<float>& uv,
+                            std::vector<float>& vertex_along_m) {
+  SynthPatch patch;
+  patch.style = piece.style;
+  patch.rails = sides;
+  patch.start_m = piece.start_m;
+  patch.end_m = piece.end_m;
+  int rows = std::max(
+      2,
+      static_cast<int>(std::lround((piece.end_m - piece.start_m) / defects.segment_length_m)) + 1);
+  int count = rows * sides;
+  double draw = rng.uniform(0, 1);
+  patch.order = draw < defects.reversed_share                            ? VertexOrder::reversed
+                : draw < defects.reversed_share + defects.shuffled_share ? VertexOrder::shuffled
+                                                                         : VertexOrder::natural;
+  patch.triangulated = rng.chance(defects.triangulate_share);
+  std::vector<int32_t> id(static_cast<size_t>(count));
+  std::iota(id.begin(), id.end(), 0);
+  if (patch.order == VertexOrder::reversed)
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < sides; ++c) id[r * sides + c] = (rows - 1 - r) * sides + c;
+  if (patch.order == VertexOrder::shuffled) rng.shuffle(id);
+  auto base = static_cast<int32_t>(vertex_along_m.size());
+  patch.first_vertex = base;
+  patch.vertex_count = count;
+  patch.first_face = mesh.face_count();
+  positions.resize(3 * static_cast<size_t>(base + count));
+  vertex_along_m.resize(static_cast<size_t>(base + count));
+  for (int r = 0; r < rows; ++r) {
+    double s = piece.start_m + (piece.end_m - piece.start_m) * r / (rows - 1);
+    Vec3 centre = stream.point_at(s), across = stream.across_at(s), normal = stream.normal_at(s);
+    double radius = 0.5 * stream.width_at(s);
+    for (int c = 0; c < sides; ++c) {
+      double angle = 2 * kPi * c / sides;
+      Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      Vec3 p = centre + radius * (std::cos(angle) * across + std::sin(angle) * normal) +
+               defects.jitter_m * jitter;
+      int32_t v = base + id[static_cast<size_t>(r * sides + c)];
+      for (int k = 0; k < 3; ++k)
+        positions[3 * static_cast<size_t>(v) + static_cast<size_t>(k)] = static_cast<float>(p[k]);
+      vertex_along_m[static_cast<size_t>(v)] = static_cast<float>(s);
+    }
+  }
+  auto corner = [&](int r, int c) {
+    uv.push_back(static_cast<float>(c) / static_cast<float>(sides));
+    uv.push_back(static_cast<float>(r) / static_cast<float>(rows - 1));
+    return base + id[static_cast<size_t>(r * sides + c % sides)];
+  };
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int c = 0; c < sides; ++c) {
+      if (patch.triangulated) {
+        std::vector<int32_t> first{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1)};
+        mesh.append_face(first);
+        std::vector<int32_t> second{corner(r, c), corner(r + 1, c + 1), corner(r + 1, c)};
+        mesh.append_face(second);
+      } else {
+        std::vector<int32_t> quad{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1),
+                                  corner(r + 1, c)};
+        mesh.append_face(quad);
+      }
+    }
+  patch.face_count = mesh.face_count() - patch.first_face;
+  return patch;
+}
+
 /// One patch for the streams `stream_ids` of a short cap meshed in rings (a wig cap):
 /// vertex (k, r) on stream k at arc length r * segment_length_m, quads between
 /// neighbouring streams (the last joined to the first) for rows both reach. Texture u runs
@@ -781,12 +917,17 @@ HairStyle style_at(const Stream& stream, double along_m) {
 
 /// Dense true strands of a stream: `count` strands at fixed places across the stream's
 /// width and thickness (a third of its width; on the scalp: from half to 1.5 times its
-/// lift), following its centre; the style of every point is appended to `point_style`.
+/// lift; a tube: over its round section), following its centre; the style of every point is appended to `point_style`.
 void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head, int count,
                       Rng& rng, std::vector<Points3f>& polylines,
                       std::vector<int32_t>& strand_stream, std::vector<HairStyle>& point_style) {
   for (int j = 0; j < count; ++j) {
     double u = rng.uniform(-0.5, 0.5), v = rng.uniform(-0.5, 0.5) / 3.0;
+    if (stream.tube) {  // uniform over the disc of the tube's diameter
+      const double radius = 0.5 * std::sqrt(rng.uniform(0, 1)), angle = rng.uniform(0, 2 * kPi);
+      u = radius * std::cos(angle);
+      v = radius * std::sin(angle);
+    }
     double end = stream.length_m() * (stream.trim_tips ? rng.uniform(0.9, 1.0) : 1.0);
     std::vector<Vec3> points;
     for (size_t i = 0; i < stream.points.size() && stream.along_m[i] <= end; ++i) {
@@ -812,7 +953,7 @@ void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head,
 
 const std::vector<std::string>& painted_preset_names() {
   static const std::vector<std::string> names = {"ring_cap", "cap_over_layer", "mohawk",
-                                                 "low_tail", "face_locks"};
+                                                 "low_tail", "face_locks", "bun", "ringlets"};
   return names;
 }
 
@@ -922,6 +1063,42 @@ HairStyleSpec painted_preset(const std::string& name) {
     spec.defects.normal_pieces_max = 2;
     spec.defects.painted_texture = true;
     spec.components = {normal, left, right};
+  } else if (name == "bun") {
+    // An up-do: hair pulled up and back from the whole hairline to a band high on the back
+    // of the crown, its ends coiled round the band into a bun lying against the head.
+    ComponentSpec up_do;
+    up_do.kind = Kind::ponytail;
+    up_do.stream_count = 14;
+    up_do.band_polar_deg = 60;
+    up_do.length_min_m = 0.26;
+    up_do.length_max_m = 0.32;
+    up_do.strip_width_m = 0.05;
+    up_do.bun_radius_m = 0.03;
+    spec.defects.painted_texture = true;
+    spec.components = {up_do};
+  } else if (name == "ringlets") {
+    // A one-piece cap in rings over the top of the head and, from under its edge at the
+    // sides and back, corkscrew ringlets meshed as tubes hanging to the shoulders.
+    ComponentSpec cap = preset("ring_cap").components.front();
+    cap.length_min_m = 0.12;
+    cap.length_max_m = 0.16;
+    ComponentSpec curls = normal;
+    curls.stream_count = 20;
+    curls.polar_min_deg = 70;
+    curls.azimuth_min_deg = -160;
+    curls.azimuth_max_deg = 160;
+    curls.length_min_m = 0.18;
+    curls.length_max_m = 0.26;
+    curls.strip_width_m = 0.01;
+    curls.ringlet_radius_m = 0.008;
+    curls.ringlet_pitch_m = 0.035;
+    curls.tube_sides = 6;
+    spec.defects.scalp_lift_m = 0.003;
+    // Rings 6 mm apart along the hair, twelve a turn of the curl (a 1.5 cm quad would cut
+    // across a 3.5 cm turn by 37 degrees).
+    spec.defects.segment_length_m = 0.006;
+    spec.defects.painted_texture = true;
+    spec.components = {cap, curls};
   }
   return spec;
 }
@@ -1142,8 +1319,13 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     if (in_rings) ring_streams[static_cast<size_t>(stream.component)].push_back(stream_id);
     int pieces = in_rings ? 0 : static_cast<int>(stream.pieces.size());
     for (int k = 0; k < pieces; ++k) {
-      SynthPatch patch = build_patch(stream, stream.pieces[static_cast<size_t>(k)], spec.defects,
-                                     head, rng, positions, model.mesh, uv, model.vertex_along_m);
+      const int tube_sides = spec.components[static_cast<size_t>(stream.component)].tube_sides;
+      SynthPatch patch =
+          tube_sides > 0
+              ? build_tube_patch(stream, stream.pieces[static_cast<size_t>(k)], tube_sides,
+                                 spec.defects, rng, positions, model.mesh, uv, model.vertex_along_m)
+              : build_patch(stream, stream.pieces[static_cast<size_t>(k)], spec.defects, head, rng,
+                            positions, model.mesh, uv, model.vertex_along_m);
       patch.stream = stream_id;
       patch.index_in_stream = k;
       // Algorithm 1 of the paper: no preceding group and no following one: root-free; no

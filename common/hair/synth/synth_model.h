@@ -69,6 +69,18 @@ struct ComponentSpec {
   /// the rings' chains longer than the hair's, instead of one grid per stream. Its roots
   /// all lie polar_min_deg from the whorl.
   bool one_piece_rings = false;
+  /// Ponytail: above 0, the tail is coiled round the band into a bun of this radius,
+  /// lying against the head, each stream from its own side of the band (an up-do);
+  /// the coil is fixed hair, as the cap is.
+  double bun_radius_m = 0.0;
+  /// Normal hair: above 0, each stream winds round its hanging axis in a helix of this
+  /// radius and `ringlet_pitch_m` per turn (a corkscrew ringlet), fading in over its
+  /// first 3 cm.
+  double ringlet_radius_m = 0.0;
+  double ringlet_pitch_m = 0.035;
+  /// Above 0: each piece is meshed as a closed tube of this many sides round the stream's
+  /// centre (its diameter the strip width), as artists model ringlets, not a flat strip.
+  int tube_sides = 0;
 };
 
 /// How patches are cut from streams and how much they are spoiled; every defect has a
@@ -117,7 +129,9 @@ const std::vector<std::string>& preset_names();
 /// painted down from it), "cap_over_layer" (such a cap over a longer back layer of
 /// strips), "mohawk" (spike cards along the middle of the head), "low_tail" (hair pulled
 /// back under a band low at the nape into a tail), "face_locks" (medium hair with two
-/// longer locks framing the face).
+/// longer locks framing the face), "bun" (hair pulled up from the whole hairline to a
+/// band high on the back of the crown and coiled round it), "ringlets" (a one-piece cap
+/// over the top of the head with corkscrew ringlet tubes hanging from under its edge).
 const std::vector<std::string>& painted_preset_names();
 
 /// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.

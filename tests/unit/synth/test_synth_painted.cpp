@@ -79,12 +79,22 @@ AgainstTruth extract_against_truth(const SynthModel& model, const PolyMesh& body
   return against_truth(result.strands, model.strands);
 }
 
-/// The painted presets that miss the real-meshes issue's targets (90% of the input
-/// strands along the truth, 95% root to tip) today, paint or not: the pulled-back cap into
-/// a low tail (cap strands converging at the band read partly the wrong way) and the
-/// face-framing locks. The issue stays open for them.
-bool misses_the_targets(const std::string& preset_name) {
-  return preset_name == "low_tail" || preset_name == "face_locks";
+/// The painted presets whose input strands miss the real-meshes issue's 90% along the
+/// truth today, paint or not, and the floor each holds: the pulled-back cap into a low
+/// tail and the bun (cap strands converging at a band, read across one another there), the
+/// face-framing locks, and the ringlets (tubes crowding one another as they hang).
+double along_floor(const std::string& preset_name) {
+  if (preset_name == "low_tail" || preset_name == "face_locks" || preset_name == "bun") return 0.8;
+  if (preset_name == "ringlets") return 0.72;
+  return 0.9;
+}
+
+/// Root to tip, the issue asks 95% of the strands; since the paint overrules vertex ids
+/// that run tip to root (paint_overrules_ids in extract.cpp) every painted preset meets it
+/// but the ringlets, whose tubes' pieces carry no ids that matter and which continuation
+/// reads partly the wrong way where a tube starts under the cap's edge.
+double right_way_floor(const std::string& preset_name) {
+  return preset_name == "ringlets" ? 0.85 : 0.95;
 }
 
 bool all_ring_cap(const SynthModel& model) {
@@ -106,15 +116,12 @@ TEST(SynthPainted, PaintedPresetsAreReadAlongTheirTruthAndTheRingCapOnlyWithItsP
                   "%5.1f%%), right way %5.1f%% of %lld strands\n",
                   name.c_str(), seed, 100 * with.along_share, 100 * without.along_share,
                   100 * with.right_way_share, static_cast<long long>(with.strands));
-      if (misses_the_targets(name)) {
-        // Floors under what they measured when they came (2026-11-24): low_tail 85.0-87.2%
-        // along and 83.1-99.0% root to tip, face_locks 86.3-89.2% and 91.2-96.1%.
-        EXPECT_GE(with.along_share, 0.8);
-        EXPECT_GE(with.right_way_share, 0.78);
-      } else {
-        EXPECT_GE(with.along_share, 0.9);
-        EXPECT_GE(with.right_way_share, 0.95);
-      }
+      // Measured 2026-11-26 (seeds 1-3): low_tail 85.0-87.2% along and 95.4-100% root to
+      // tip (83.1-99.0% before the paint overruled the ids), face_locks 86.3-89.2% and
+      // 97.9-99.3% (91.2-96.1%), bun 86.7-88.7% and 99.1-100% (78.5-87.4%), ringlets
+      // 78.0-89.1% and 87.6-100%.
+      EXPECT_GE(with.along_share, along_floor(name));
+      EXPECT_GE(with.right_way_share, right_way_floor(name));
       // Without its texture a ring cap is read in rings: the paint is what fixes it (with a
       // layer of strips beside it, cap_over_layer, the strips' segments outnumber the cap's).
       if (all_ring_cap(model)) {
