@@ -1068,7 +1068,8 @@ HairStyleSpec painted_preset(const std::string& name) {
     // of the crown, its ends coiled round the band into a bun lying against the head.
     ComponentSpec up_do;
     up_do.kind = Kind::ponytail;
-    up_do.stream_count = 14;
+    up_do.stream_count = 24;
+    up_do.polar_min_deg = 35;  // roots towards the hairline: the strips cover the scalp as they converge
     up_do.band_polar_deg = 60;
     up_do.length_min_m = 0.26;
     up_do.length_max_m = 0.32;
