@@ -326,7 +326,9 @@ TEST(SynthShortCap, GridsLieOnTheScalpFromTheCrownDownToTheHairline) {
 }
 
 TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
-  for (const std::string& name : preset_names()) {
+  std::vector<std::string> names = preset_names();
+  names.insert(names.end(), painted_preset_names().begin(), painted_preset_names().end());
+  for (const std::string& name : names) {
     HairStyleSpec spec = varied_spec(preset(name), 5);
     EXPECT_NO_THROW(check_spec(spec)) << name;
     EXPECT_EQ(spec_json(spec_from_json(spec_json(spec))), spec_json(spec)) << name;
@@ -343,6 +345,75 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   json = spec_json(preset("short"));
   json["components"][0]["stream_count"] = "many";
   EXPECT_THROW(spec_from_json(json), hair::Error);
+  // A tube needs three sides at least; a bun's radius and a ringlet's pitch their ranges.
+  json = spec_json(preset("ringlets"));
+  EXPECT_EQ(json["components"][1]["tube_sides"], 6);
+  json["components"][1]["tube_sides"] = 2;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("ringlets"));
+  json["components"][1]["ringlet_pitch_m"] = 0.0;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("bun"));
+  json["components"][0]["bun_radius_m"] = -0.01;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+}
+
+TEST(SynthPresets, TheBunCoilsRoundItsBandAndTheRingletsWindRoundTheirAxis) {
+  PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+  body.vertices *= 0.1f;
+  // The bun: every stream is fixed hair, and its last 5 cm stay within 4.5 cm of the
+  // centre of its stream ends (a coil of 3 cm radius, rising 1 cm a turn), where a tail
+  // would hang 5 cm down.
+  SynthModel bun = generate_model(preset("bun"), body, 1);
+  ASSERT_GT(bun.stream_centres.strand_count(), 10);
+  Eigen::Vector3f centre = Eigen::Vector3f::Zero();
+  for (int64_t s = 0; s < bun.stream_centres.strand_count(); ++s)
+    centre += bun.stream_centres.points.row(bun.stream_centres.offsets[s + 1] - 1).transpose();
+  centre /= static_cast<float>(bun.stream_centres.strand_count());
+  for (int64_t s = 0; s < bun.stream_centres.strand_count(); ++s) {
+    EXPECT_EQ(bun.stream_style[static_cast<size_t>(s)], HairStyle::fixed);
+    const int64_t last = bun.stream_centres.offsets[s + 1] - 1;
+    float along = 0;
+    for (int64_t row = last; row > bun.stream_centres.offsets[s] && along < 0.05f; --row) {
+      EXPECT_LT((bun.stream_centres.points.row(row).transpose() - centre).norm(), 0.045f);
+      along += (bun.stream_centres.points.row(row) - bun.stream_centres.points.row(row - 1)).norm();
+    }
+  }
+  // The ringlets: tubes of 6 sides (closed: every vertex in 3 or 4 quads of its tube), and
+  // each ringlet's centre turns round its hanging axis: its horizontal direction from its
+  // running mean over a pitch sweeps all round.
+  SynthModel ringlets = generate_model(preset("ringlets"), body, 1);
+  int tubes = 0;
+  for (const SynthPatch& patch : ringlets.patches) {
+    if (patch.rails != 6 || patch.style != HairStyle::normal) continue;
+    ++tubes;
+    std::vector<int> faces_at(static_cast<size_t>(patch.vertex_count), 0);
+    for (int64_t f = patch.first_face; f < patch.first_face + patch.face_count; ++f)
+      for (int32_t v : ringlets.mesh.face(f)) ++faces_at[static_cast<size_t>(v - patch.first_vertex)];
+    for (int count : faces_at) EXPECT_GE(count, 2);  // no open edge round the tube
+  }
+  EXPECT_GE(tubes, 15);
+  int winding = 0;
+  for (size_t s = 0; s < ringlets.stream_style.size(); ++s) {
+    if (ringlets.stream_component[s] != 1) continue;
+    const auto first = ringlets.stream_centres.offsets[s], end = ringlets.stream_centres.offsets[s + 1];
+    double turned = 0;
+    Eigen::Vector2d previous = Eigen::Vector2d::Zero();
+    for (int64_t row = first + 12; row + 4 < end; row += 2) {  // past the 3 cm fade-in
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      int n = 0;
+      for (int64_t k = std::max(first, row - 4); k <= row + 4; ++k, ++n)
+        mean += ringlets.stream_centres.points.row(k).cast<double>().transpose();
+      const Eigen::Vector3d off = ringlets.stream_centres.points.row(row).cast<double>().transpose() - mean / n;
+      const Eigen::Vector2d flat(off.x(), off.z());
+      if (flat.norm() < 1e-4) continue;
+      if (previous.norm() > 0)
+        turned += std::abs(std::atan2(previous.x() * flat.y() - previous.y() * flat.x(), previous.dot(flat)));
+      previous = flat;
+    }
+    if (turned > 2 * M_PI) ++winding;
+  }
+  EXPECT_GE(winding, 15);
 }
 
 }  // namespace
