@@ -17,7 +17,7 @@ packages=(
   # libraries (find_package / find_library in CMakeLists.txt)
   libeigen3-dev libassimp-dev libhdf5-dev libcli11-dev libspdlog-dev libfmt-dev
   libnanoflann-dev nlohmann-json3-dev libssl-dev libspectra-dev
-  libsuitesparse-dev liblapack-dev zlib1g-dev
+  libsuitesparse-dev liblapack-dev zlib1g-dev libtomlplusplus-dev
   libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-ml-dev
   libopencv-videoio-dev  # preview videos: MP4 through FFmpeg (libavcodec)
   # tests

@@ -10,6 +10,7 @@
 #include "hair/style/hair_style.h"
 #include "hair/style/style_io.h"
 #include "hair/style/style_model_io.h"
+#include "hair/style/style_overrides.h"
 
 int main(int argc, char** argv) {
   hair::StageApp app("classify",
@@ -26,10 +27,20 @@ int main(int argc, char** argv) {
                   "style model file from hair-train-style: models/style_extended.yml (the "
                   "paper's features and ours) or models/style_paper.yml")
       ->required();
+  std::string overrides_path;
+  app.cli().add_option("--overrides", overrides_path,
+                       "TOML file of [[pin]] tables that pin clusters' styles, each by "
+                       "cluster = ID or point_m = [x, y, z] and style = \"fixed\" "
+                       "(docs/classify.md)");
   std::string classifier = "random_forest";
   app.params().add("classifier", classifier,
                    "whose class is the style: random_forest (the paper's better one) or svm",
                    {"random_forest", "svm"});
+  double unsure_below = hair::kDefaultUnsureBelow;
+  app.params().add("unsure_below", unsure_below,
+                   "a cluster whose classifier gives its style a smaller share of votes is "
+                   "unsure (styles.h5, the picture, the log)",
+                   hair::ParamRange::closed(0.0, 1.0));
 
   return app.run(argc, argv, [&] {
     hair::StyleModel model = hair::read_style_model(model_path, {});
@@ -42,6 +53,23 @@ int main(int argc, char** argv) {
     hair::StyleFeatures features = hair::style_features(input, feature_params);
     hair::ClusterStyles styles =
         hair::cluster_styles(features, model, *hair::style_classifier_from_name(classifier));
+    // The user's pins, read and resolved before anything is written (a bad file: one
+    // line, exit 2, no output).
+    if (!overrides_path.empty()) {
+      const std::vector<hair::ResolvedPin> pins = hair::resolve_style_pins(
+          hair::read_style_pins(overrides_path), styles.style, input.strands,
+          input.head_height_m, overrides_path);
+      for (const hair::ResolvedPin& pin : pins)
+        spdlog::info("{}: cluster {} pinned {} (the classifier said {}, {:.2f} of its votes){}",
+                     overrides_path, pin.cluster, hair::hair_style_name(pin.style),
+                     hair::hair_style_name(static_cast<hair::HairStyle>(
+                         styles.style[static_cast<size_t>(pin.cluster)])),
+                     styles.confidence[static_cast<size_t>(pin.cluster)],
+                     pin.distance_m > 0
+                         ? fmt::format(", by a point {:.1f} mm from its strands", 1000 * pin.distance_m)
+                         : std::string());
+      hair::apply_style_pins(pins, styles);
+    }
     int classified = 0;
     std::string summary;
     for (size_t c = 0; c < styles.style.size(); ++c) {
@@ -52,6 +80,16 @@ int main(int argc, char** argv) {
     }
     spdlog::info("{}: {} clusters, {} classified ({})", strands_path, styles.style.size(),
                  classified, summary);
+    const std::vector<uint8_t> unsure = hair::unsure_clusters(styles, unsure_below);
+    std::string unsure_list;
+    for (size_t c = 0; c < unsure.size(); ++c)
+      if (unsure[c])
+        unsure_list += fmt::format("{}{} {} ({:.2f})", unsure_list.empty() ? "" : ", ", c,
+                                   hair::hair_style_name(static_cast<hair::HairStyle>(styles.style[c])),
+                                   styles.confidence[c]);
+    if (!unsure_list.empty())
+      spdlog::info("{}: unsure (under {:.2f} of the votes; pin them with --overrides if wrong): {}",
+                   strands_path, unsure_below, unsure_list);
     if (classified < static_cast<int>(styles.style.size()))
       spdlog::info("{}: {} clusters have no grown strands and are not classified", strands_path,
                    styles.style.size() - static_cast<size_t>(classified));
@@ -59,14 +97,15 @@ int main(int argc, char** argv) {
     hair::AtomicFile output(app.output_path());
     hair::h5::File file = hair::h5::File::create(output.temporary_path(), app.output_path());
     hair::write_styles_file(file, styles, features, model_path, model.feature_set,
-                            input.head_height_m);
+                            input.head_height_m, unsure_below);
+    std::vector<std::pair<std::string, std::filesystem::path>> inputs{{"extract", extract_path},
+                                                            {"clusters", clusters_path},
+                                                            {"strands", strands_path},
+                                                            {"model", model_path}};
+    if (!overrides_path.empty()) inputs.emplace_back("overrides", overrides_path);
     hair::write_provenance(file,
                            hair::stage_provenance("classify", app.params().effective_json().dump(),
-                                                  {{"extract", extract_path},
-                                                   {"clusters", clusters_path},
-                                                   {"strands", strands_path},
-                                                   {"model", model_path}},
-                                                  app.elapsed_s(), app.reproducible()));
+                                                  inputs, app.elapsed_s(), app.reproducible()));
     hair::h5::require_valid_output(file, hair::kStylesSchema);
     file.close();
     output.commit();

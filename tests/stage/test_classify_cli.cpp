@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -18,6 +19,7 @@
 #include "hair/h5/dataset.h"
 #include "hair/h5/file.h"
 #include "hair/style/hair_style.h"
+#include "hair/grow/grow_io.h"
 #include "hair/style/style_io.h"
 #include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
@@ -78,7 +80,7 @@ std::multiset<std::string> styles_found(const fs::path& path) {
   std::vector<std::string> report = text_lines(inspect.out);
   EXPECT_FALSE(report.empty());
   if (!report.empty()) {
-    EXPECT_EQ(report.back(), "valid: hairstyle.styles v2");
+    EXPECT_EQ(report.back(), "valid: hairstyle.styles v3");
   }
   hair::h5::File file = hair::h5::File::open_read_only(path);
   EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "classify");
@@ -149,6 +151,135 @@ TEST_F(ClassifyCli, DrawsTheStylesInThePapersColours) {
   EXPECT_NE(no_strands.err.find("needs --strands"), std::string::npos) << no_strands.err;
 }
 
+TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
+  hair::h5::File file = hair::h5::File::open_read_only(styles(sample("ponytail01")));
+  const std::vector<int8_t> style = hair::read_cluster_styles(file);
+  const hair::StyleCertainty certainty = hair::read_style_certainty(file);
+  const auto votes = hair::h5::read_matrix<double, Eigen::Dynamic>(file, "/clusters/forest_vote_fraction");
+  const std::vector<int8_t> classes = hair::h5::read_enum_dataset(file, "/classes/style", hair::style_members());
+  EXPECT_DOUBLE_EQ(certainty.unsure_below, 0.6);
+  for (size_t c = 0; c < style.size(); ++c) {
+    SCOPED_TRACE("cluster " + std::to_string(c));
+    EXPECT_EQ(certainty.pinned[c], 0);
+    if (style[c] < 0) {
+      EXPECT_EQ(certainty.confidence[c], 0.0);
+      EXPECT_EQ(certainty.unsure[c], 0);
+      continue;
+    }
+    // The random forest's share of votes for the style it gave, and unsure below 0.6.
+    const auto k = std::find(classes.begin(), classes.end(), style[c]) - classes.begin();
+    EXPECT_DOUBLE_EQ(certainty.confidence[c], votes(static_cast<Eigen::Index>(c), k));
+    EXPECT_EQ(certainty.unsure[c], certainty.confidence[c] < 0.6 ? 1 : 0);
+    EXPECT_GE(certainty.confidence[c], 1.0 / static_cast<double>(classes.size()));
+  }
+}
+
+TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {
+  const SampleOutputs ponytail = sample("ponytail01");
+  hair::h5::File classified = hair::h5::File::open_read_only(styles(ponytail));
+  const std::vector<int8_t> before = hair::read_cluster_styles(classified);
+  // The cluster with most strands, pinned to a style other than its own; and a second
+  // cluster by a point of its grown strands.
+  const std::vector<int64_t> strands = hair::h5::read_vector<int64_t>(classified, "/clusters/strand_count");
+  const auto biggest = static_cast<size_t>(std::max_element(strands.begin(), strands.end()) - strands.begin());
+  const int8_t other = before[biggest] == 1 ? 0 : 1;  // fixed, or normal if it was fixed
+  const hair::GrownStrands grown = hair::read_grown_strands(hair::h5::File::open_read_only(ponytail.strands));
+  const auto& point_cluster = std::get<std::vector<int32_t>>(grown.strands.point_attributes.at("cluster"));
+  int64_t point = -1;
+  for (int64_t p = 0; p < grown.strands.point_count(); ++p)
+    if (point_cluster[static_cast<size_t>(p)] != static_cast<int32_t>(biggest) &&
+        before[static_cast<size_t>(point_cluster[static_cast<size_t>(p)])] >= 0) {
+      point = p;
+      break;
+    }
+  ASSERT_GE(point, 0);
+  const auto second = static_cast<size_t>(point_cluster[static_cast<size_t>(point)]);
+  const Eigen::Vector3f at = grown.strands.points.row(point).transpose() + Eigen::Vector3f(0.001f, 0, 0);
+  const fs::path overrides = directory() / "pins.toml";
+  hair::test::write_text_file(
+      overrides, "# pins\n[[pin]]\ncluster = " + std::to_string(biggest) + "\nstyle = \"" +
+                     hair::hair_style_name(static_cast<hair::HairStyle>(other)) +
+                     "\"\n\n[[pin]]\npoint_m = [" + std::to_string(at.x()) + ", " +
+                     std::to_string(at.y()) + ", " + std::to_string(at.z()) +
+                     "]\nstyle = \"short\"\n");
+  const fs::path path = directory() / "pinned.h5";
+  std::vector<std::string> arguments = inputs(ponytail);
+  arguments.insert(arguments.end(), {"--overrides", overrides.string(), "-o", path.string()});
+  arguments.push_back("--reproducible");
+  const auto run = run_command(kBin / "classify", arguments);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("cluster " + std::to_string(biggest) + " pinned"), std::string::npos) << run.err;
+  hair::h5::File file = hair::h5::File::open_read_only(path);
+  const std::vector<int8_t> after = hair::read_cluster_styles(file);
+  const hair::StyleCertainty certainty = hair::read_style_certainty(file);
+  const std::vector<int8_t> forest = hair::h5::read_enum_dataset(file, "/clusters/forest_style", hair::style_members());
+  for (size_t c = 0; c < after.size(); ++c) {
+    SCOPED_TRACE("cluster " + std::to_string(c));
+    if (c == biggest) {
+      EXPECT_EQ(after[c], other);
+      EXPECT_EQ(certainty.pinned[c], 1);
+      EXPECT_EQ(certainty.unsure[c], 0);
+      EXPECT_EQ(forest[c], before[c]);  // the classifier's own answer stays
+    } else if (c == second) {
+      EXPECT_EQ(after[c], 2);  // short
+      EXPECT_EQ(certainty.pinned[c], 1);
+    } else {
+      EXPECT_EQ(after[c], before[c]);
+      EXPECT_EQ(certainty.pinned[c], 0);
+    }
+  }
+  // Provenance: the overrides file is an input, with its digest.
+  const std::string provenance = hair::h5::read_string_attribute(file, "/", "inputs");
+  EXPECT_NE(provenance.find("\"overrides\""), std::string::npos) << provenance;
+  EXPECT_NE(provenance.find("pins.toml"), std::string::npos) << provenance;
+  // The picture lists the pinned clusters.
+  const fs::path png = directory() / "pinned.png";
+  auto drawn = run_command(kBin / "hair-render", {path.string(), "--strands", ponytail.strands.string(),
+                                                   "--extract", ponytail.extract.string(), "--size", "128",
+                                                   "-o", png.string()});
+  EXPECT_EQ(drawn.exit_code, 0) << drawn.err;
+}
+
+TEST_F(ClassifyCli, ThePipelineTakesAModelsPinsWhenItHasSomeAndRerunsOnlyClassify) {
+  // A DATA folder with braid01's mesh and body, and its OUT folder up to date (the
+  // fixture's files, each newer than what it is made from). `make -n` then has nothing to
+  // do; a pins file in DATA/overrides makes it rerun classify alone, with --overrides.
+  const SampleOutputs braid = sample("braid01");
+  const fs::path root = directory() / "make";
+  const fs::path data = root / "data", out = root / "out" / "braid01";
+  fs::create_directories(data / "hair");
+  fs::create_directories(out);
+  fs::copy_file(kSamples / "hair" / "braid01.obj", data / "hair" / "braid01.obj");
+  fs::copy_file(kSamples / "body.obj", data / "body.obj");
+  const fs::path made[] = {braid.extract, braid.types, braid.middle, braid.clusters, braid.strands,
+                           styles(braid)};
+  auto when = fs::file_time_type::clock::now() + std::chrono::seconds(10);
+  for (const fs::path& file : made) {
+    fs::copy_file(file, out / file.filename());
+    fs::last_write_time(out / file.filename(), when += std::chrono::seconds(1));
+  }
+  const std::vector<std::string> make = {
+      "-n", "-f", (fs::path(HAIR_SOURCE_DIR) / "Makefile.pipeline").string(),
+      "DATA=" + data.string(), "OUT=" + (root / "out").string(), "BIN=" + kBin.string(),
+      "PARAMS=" + (fs::path(HAIR_SOURCE_DIR) / "pipelines" / "default").string(),
+      "STYLE_MODEL=" + kModel.string(), (out / "styles.h5").string()};
+  auto before = run_command("/usr/bin/make", make, HAIR_SOURCE_DIR);
+  ASSERT_EQ(before.exit_code, 0) << before.err;
+  EXPECT_NE(before.out.find("is up to date"), std::string::npos) << before.out;
+  EXPECT_EQ(before.out.find("--model"), std::string::npos) << before.out;
+  fs::create_directories(data / "overrides");
+  hair::test::write_text_file(data / "overrides" / "braid01.toml", "[[pin]]\ncluster = 0\nstyle = \"fixed\"\n");
+  fs::last_write_time(data / "overrides" / "braid01.toml", when += std::chrono::seconds(1));
+  auto after = run_command("/usr/bin/make", make, HAIR_SOURCE_DIR);
+  ASSERT_EQ(after.exit_code, 0) << after.err;
+  const std::vector<std::string> commands = text_lines(after.out);
+  ASSERT_EQ(commands.size(), 1u) << after.out;
+  EXPECT_NE(commands[0].find("/classify "), std::string::npos) << commands[0];
+  EXPECT_NE(commands[0].find("--overrides " + (data / "overrides" / "braid01.toml").string()),
+            std::string::npos)
+      << commands[0];
+}
+
 /// A copy of the model file with its text changed by `edit`.
 fs::path edited_model(const fs::path& copy, const std::string& from, const std::string& to) {
   std::ifstream stream(kModel);
@@ -172,6 +303,11 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
       edited_model(directory / "v2.yml", "version: 1", "version: 2").string();
   const std::string other_format =
       edited_model(directory / "format.yml", "hairstyle.style_model", "something.else").string();
+  auto pins = [&](const std::string& name, const std::string& text) {
+    const fs::path path = directory / (name + ".toml");
+    hair::test::write_text_file(path, text);
+    return path.string();
+  };
   const std::vector<hair::test::FailureCase> cases = {
       {{(directory / "missing.h5").string(), clusters, strands, "--model", model}, "missing.h5"},
       {{(directory / "text.h5").string(), clusters, strands, "--model", model}, "not an HDF5 file"},
@@ -185,6 +321,15 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
       {{extract, clusters, strands, "--model", other_format}, "format"},
       {{extract, clusters, strands, "--model", model, "--classifier", "knn"}, "classifier"},
       {{extract, clusters, strands}, "--model"},
+      {{extract, clusters, strands, "--model", model, "--overrides", (directory / "no.toml").string()}, "no.toml"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("unknown_cluster", "[[pin]]\ncluster = 999\nstyle = \"fixed\"\n")}, "no cluster 999"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("unknown_style", "[[pin]]\ncluster = 0\nstyle = \"curly\"\n")}, "style must be one of"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("malformed", "[[pin]\ncluster = 0\n")}, "not TOML"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("both", "[[pin]]\ncluster = 0\npoint_m = [0, 1.6, 0]\nstyle = \"fixed\"\n")}, "either cluster or point_m"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("far_point", "[[pin]]\npoint_m = [5, 5, 5]\nstyle = \"fixed\"\n")}, "no grown strand within"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("unknown_key", "[[pin]]\ncluster = 0\nstyle = \"fixed\"\ncolour = \"red\"\n")}, "unknown key 'colour'"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("top_key", "style = \"fixed\"\n")}, "unknown key 'style'"},
+      {{extract, clusters, strands, "--model", model, "--overrides", pins("disagree", "[[pin]]\ncluster = 1\nstyle = \"fixed\"\n[[pin]]\ncluster = 1\nstyle = \"normal\"\n")}, "pinned already"},
   };
   hair::test::expect_clean_failures(kBin / "classify", "classify", cases, directory / "failures",
                                     braid.clusters);

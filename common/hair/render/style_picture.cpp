@@ -45,6 +45,7 @@ int draw_style_legend(cv::Mat& image, cv::Point top_left, const std::array<int, 
 cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5::File& extract,
                        const RenderOptions& options) {
   std::vector<int8_t> cluster_style = read_cluster_styles(styles);
+  const StyleCertainty certainty = read_style_certainty(styles);
   GrownStrands grown = read_grown_strands(strands);
   const StrandSet& set = grown.strands;
   const auto& point_cluster = std::get<std::vector<int32_t>>(set.point_attributes.at("cluster"));
@@ -56,7 +57,10 @@ cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5
                                                 " clusters, " + strands.name() +
                                                 " a point of cluster " + std::to_string(cluster) +
                                                 ": made from another model");
-    colours.push_back(style_colour(cluster_style[static_cast<size_t>(cluster)]));
+    cv::Vec3b colour = style_colour(cluster_style[static_cast<size_t>(cluster)]);
+    if (certainty.unsure[static_cast<size_t>(cluster)])  // unsure: pale, half way to white
+      for (int k = 0; k < 3; ++k) colour[k] = static_cast<uint8_t>((colour[k] + 255) / 2);
+    colours.push_back(colour);
   }
   ExtractedBody body = read_extracted_body(extract);
   cv::Mat image = render_strands(set, colours, body.vertices, body.triangles, options);
@@ -65,6 +69,24 @@ cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5
   for (int8_t style : cluster_style)
     if (style >= 0 && style < 4) ++count[static_cast<size_t>(style)];
   draw_style_legend(image, cv::Point(10, 34), count);
+  // Below it, which clusters are unsure (drawn pale) and which the user pinned.
+  std::string unsure, pinned;
+  for (size_t c = 0; c < cluster_style.size(); ++c) {
+    if (certainty.unsure[c])
+      unsure += (unsure.empty() ? "" : ", ") + std::to_string(c) + " (" +
+                cv::format("%.2f", certainty.confidence[c]) + ")";
+    if (certainty.pinned[c]) pinned += (pinned.empty() ? "" : ", ") + std::to_string(c);
+  }
+  int y = 62;
+  if (!unsure.empty()) {
+    cv::putText(image, cv::format("pale: unsure, under %.2f of the votes: ", certainty.unsure_below) + unsure,
+                cv::Point(10, y), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(40, 40, 40), 1,
+                cv::LINE_AA);
+    y += 18;
+  }
+  if (!pinned.empty())
+    cv::putText(image, "pinned by the user: " + pinned, cv::Point(10, y), cv::FONT_HERSHEY_SIMPLEX,
+                0.45, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
   return image;
 }
 

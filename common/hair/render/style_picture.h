@@ -19,7 +19,8 @@ int draw_style_legend(cv::Mat& image, cv::Point top_left, const std::array<int, 
 
 /// Renders the grown strands of `strands` (strands.h5), every point in the paper's colour
 /// of its cluster's style in `styles` (styles.h5), over the body of `extract`, with a
-/// legend and the styles found. Errors (bad_input) name the file at fault, e.g. files of
+/// legend and the styles found; unsure clusters pale, and listed under the legend with
+/// the clusters the user pinned. Errors (bad_input) name the file at fault, e.g. files of
 /// different models.
 cv::Mat styles_picture(const h5::File& styles, const h5::File& strands, const h5::File& extract,
                        const RenderOptions& options);

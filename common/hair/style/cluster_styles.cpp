@@ -1,5 +1,7 @@
 #include "hair/style/cluster_styles.h"
 
+#include <algorithm>
+
 #include "hair/core/error.h"
 
 namespace hair {
@@ -22,6 +24,8 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
       Eigen::MatrixXd::Zero(cluster_count, class_count * (class_count - 1) / 2);
   result.svm_votes = Eigen::MatrixXi::Zero(cluster_count, class_count);
   result.forest_vote_fraction = Eigen::MatrixXd::Zero(cluster_count, class_count);
+  result.confidence.assign(static_cast<size_t>(cluster_count), 0.0);
+  result.pinned.assign(static_cast<size_t>(cluster_count), 0);
   for (Eigen::Index c = 0; c < cluster_count; ++c) {
     if (features.strand_count[static_cast<size_t>(c)] == 0) continue;
     Eigen::RowVectorXd row = rows.row(c);
@@ -38,6 +42,14 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
       result.svm_votes(c, k) = prediction.svm_votes[static_cast<size_t>(k)];
       result.forest_vote_fraction(c, k) = prediction.forest_vote_fraction[static_cast<size_t>(k)];
     }
+    const auto chosen = static_cast<Eigen::Index>(
+        std::find(model.class_labels.begin(), model.class_labels.end(), result.style[i]) -
+        model.class_labels.begin());
+    if (chosen < class_count)
+      result.confidence[i] =
+          classifier == StyleClassifierKind::svm
+              ? (class_count > 1 ? result.svm_votes(c, chosen) / static_cast<double>(class_count - 1) : 1.0)
+              : result.forest_vote_fraction(c, chosen);
   }
   return result;
 }

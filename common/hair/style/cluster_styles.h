@@ -21,7 +21,19 @@ struct ClusterStyles {
   Eigen::MatrixXd svm_decision_values;   ///< #clusters x k (k - 1) / 2, 0 where not classified
   Eigen::MatrixXi svm_votes;             ///< #clusters x k
   Eigen::MatrixXd forest_vote_fraction;  ///< #clusters x k
+  /// Per cluster, how sure the chosen classifier is of `style`, in [0, 1]: the random
+  /// forest's vote share of that class, or the SVM's one-vs-one wins of it over k - 1;
+  /// 0 for a cluster without a style. A pinned cluster (style_overrides.h) keeps what the
+  /// classifier's confidence was in its own answer.
+  std::vector<double> confidence;
+  /// Per cluster, 1 where a user pinned its style (classify --overrides).
+  std::vector<uint8_t> pinned;
 };
+
+/// Below this confidence a cluster's style is called unsure (styles.h5 /clusters/unsure,
+/// the picture, the stage's log) by default: the random forest gave the style fewer than
+/// three votes in five.
+inline constexpr double kDefaultUnsureBelow = 0.6;
 
 /// Classifies every cluster that grown strands run through by its features of the
 /// model's feature set (feature_set_rows(); their names must be the model's); a cluster

@@ -55,9 +55,19 @@ const h5::EnumMembers& style_members() {
   return members;
 }
 
+std::vector<uint8_t> unsure_clusters(const ClusterStyles& styles, double unsure_below) {
+  std::vector<uint8_t> unsure(styles.style.size(), 0);
+  for (size_t c = 0; c < unsure.size(); ++c)
+    unsure[c] = styles.style[c] >= 0 && (c >= styles.pinned.size() || !styles.pinned[c]) &&
+                        c < styles.confidence.size() && styles.confidence[c] < unsure_below
+                    ? 1
+                    : 0;
+  return unsure;
+}
+
 void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleFeatures& features,
                        const std::string& model_file, const std::string& model_feature_set,
-                       double head_height_m) {
+                       double head_height_m, double unsure_below) {
   using RowMajorD = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   using RowMajorI = Eigen::Matrix<int32_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   h5::write_schema_attributes(file, h5::Schema::find(kStylesSchema));
@@ -67,9 +77,17 @@ void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleF
   h5::write_string_attribute(file, "/", "model_file", model_file);
   h5::write_int64_attribute(file, "/", "model_version", kStyleModelVersion);
   h5::write_string_attribute(file, "/", "model_feature_set", model_feature_set);
+  h5::write_double_attribute(file, "/", "unsure_below", unsure_below);
   h5::write_enum_dataset(file, "/clusters/style", styles.style, style_members());
   h5::write_enum_dataset(file, "/clusters/svm_style", styles.svm_style, style_members());
   h5::write_enum_dataset(file, "/clusters/forest_style", styles.forest_style, style_members());
+  std::vector<double> confidence = styles.confidence;
+  confidence.resize(styles.style.size(), 0.0);
+  std::vector<uint8_t> pinned = styles.pinned;
+  pinned.resize(styles.style.size(), 0);
+  h5::write_vector(file, "/clusters/confidence", confidence);
+  h5::write_vector(file, "/clusters/unsure", unsure_clusters(styles, unsure_below));
+  h5::write_vector(file, "/clusters/pinned", pinned);
   h5::write_vector(file, "/clusters/strand_count", features.strand_count);
   h5::write_vector(file, "/clusters/point_count", features.point_count);
   h5::write_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values",
@@ -93,6 +111,16 @@ void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleF
 std::vector<int8_t> read_cluster_styles(const h5::File& file) {
   h5::require_schema(file, kStylesSchema);
   return h5::read_enum_dataset(file, "/clusters/style", style_members());
+}
+
+StyleCertainty read_style_certainty(const h5::File& file) {
+  h5::require_schema(file, kStylesSchema);
+  StyleCertainty certainty;
+  certainty.confidence = h5::read_vector<double>(file, "/clusters/confidence");
+  certainty.unsure = h5::read_vector<uint8_t>(file, "/clusters/unsure");
+  certainty.pinned = h5::read_vector<uint8_t>(file, "/clusters/pinned");
+  certainty.unsure_below = h5::read_double_attribute(file, "/", "unsure_below");
+  return certainty;
 }
 
 }  // namespace hair

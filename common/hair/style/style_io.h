@@ -25,10 +25,23 @@ inline constexpr const char* kStylesSchema = "hairstyle.styles";
 /// braided.
 const h5::EnumMembers& style_members();
 
-/// Writes styles.h5 (schemas/styles.json) but for provenance.
+/// Writes styles.h5 (schemas/styles.json) but for provenance; a classified cluster whose
+/// confidence is below `unsure_below` and that no pin settled is marked unsure.
 void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleFeatures& features,
                        const std::string& model_file, const std::string& model_feature_set,
-                       double head_height_m);
+                       double head_height_m, double unsure_below);
+
+/// Whether each classified cluster of `styles` is unsure: confidence below `unsure_below`,
+/// not pinned.
+std::vector<uint8_t> unsure_clusters(const ClusterStyles& styles, double unsure_below);
+
+/// How sure styles.h5 is of every cluster (schema version 3).
+struct StyleCertainty {
+  std::vector<double> confidence;
+  std::vector<uint8_t> unsure, pinned;
+  double unsure_below = 0;
+};
+StyleCertainty read_style_certainty(const h5::File& file);
 
 /// What the renderer and later stages read of styles.h5: the style of every cluster
 /// (-1 none), after checking the schema.
