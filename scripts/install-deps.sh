@@ -22,6 +22,9 @@ packages=(
   libopencv-videoio-dev  # preview videos: MP4 through FFmpeg (libavcodec)
   # tests
   libgtest-dev libgmock-dev
+  # the Blender add-on's test (blender/, tests/blender/): Debian's Blender runs on the
+  # system Python, where python3-h5py reads the HDF5 files
+  blender python3-h5py
   # h5ls, h5dump: to look into the pipeline's outputs
   hdf5-tools
   # functions' extents for the layout test (scripts/check-function-length.sh)

@@ -206,6 +206,32 @@ TEST_F(InterpolateCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
   }
 }
 
+// The Blender add-on (blender/hairstyle_io) in Debian's Blender, headless: ponytail01's
+// strands.h5 (with styles.h5 and extract.h5) and frames.h5 imported with every strand and
+// point where the files have them, refused files leaving the scene as it was, and
+// hair-export's OBJ read whole by Blender's own importer (tests/blender/check_import.py).
+TEST_F(InterpolateCli, BlenderImportsEveryStrandPointAndFrame) {
+  const fs::path blender = "/usr/bin/blender";
+  if (!fs::exists(blender))
+    GTEST_SKIP() << "blender is not installed (Debian: apt install blender python3-h5py; "
+                    ".ci/run installs it)";
+  Model m = model("ponytail01");
+  const fs::path folder = directory() / "blender";
+  fs::create_directories(folder);
+  auto exported = run_command(kBin / "hair-export",
+                              {m.frames.string(), "--frames", "0:1", "--obj", folder.string()});
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  const fs::path source(HAIR_SOURCE_DIR);
+  auto result = run_command(
+      blender, {"-b", "--factory-startup", "--python-exit-code", "1", "--python",
+                (source / "tests" / "blender" / "check_import.py").string(), "--",
+                (source / "blender").string(), m.out.strands.string(), m.styles.string(),
+                m.out.extract.string(), m.frames.string(), (folder / "frame_0000.obj").string()});
+  EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
+  EXPECT_NE(result.out.find("check: all passed"), std::string::npos) << result.out << result.err;
+  EXPECT_NE(result.out.find("Blender's OBJ importer keeps all"), std::string::npos) << result.out;
+}
+
 TEST_F(InterpolateCli, ExportsKeepThePoints) {
   Model m = model("braid01");
   fs::path folder = directory() / "exports";

@@ -57,13 +57,14 @@ void write_obj_polylines(const std::filesystem::path& path, const StrandSet& str
   for (Eigen::Index row = 0; row < strands.points.rows(); ++row)
     out << "v " << exact(strands.points(row, 0)) << ' ' << exact(strands.points(row, 1)) << ' '
         << exact(strands.points(row, 2)) << '\n';
-  for (int64_t s = 0; s < strands.strand_count(); ++s) {
-    out << 'l';
-    for (int64_t row = strands.offsets[static_cast<size_t>(s)];
+  // Each strand as its consecutive two-point segments: Blender's OBJ importer (3.4) keeps
+  // only the end points of an `l` line of more than two vertices, and every importer
+  // reads two-point lines whole. A strand's segments share their vertices, so readers
+  // that join lines (ours, Houdini's, Maya's) get the polyline back.
+  for (int64_t s = 0; s < strands.strand_count(); ++s)
+    for (int64_t row = strands.offsets[static_cast<size_t>(s)] + 1;
          row < strands.offsets[static_cast<size_t>(s) + 1]; ++row)
-      out << ' ' << row + 1;
-    out << '\n';
-  }
+      out << "l " << row << ' ' << row + 1 << '\n';
   finish(out, path);
 }
 
@@ -95,7 +96,12 @@ StrandSet read_obj_polylines(const std::filesystem::path& path) {
         indices.push_back(index - 1);
       }
       if (indices.size() < 2) throw fail("a polyline needs at least 2 vertices");
-      lines.push_back(std::move(indices));
+      // A line that starts where the last one ended goes on with it (a strand written as
+      // its two-point segments).
+      if (!lines.empty() && lines.back().back() == indices.front())
+        lines.back().insert(lines.back().end(), indices.begin() + 1, indices.end());
+      else
+        lines.push_back(std::move(indices));
     }
   }
   StrandSet strands;

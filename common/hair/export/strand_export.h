@@ -16,13 +16,17 @@
 namespace hair {
 
 /// Writes `strands` as an OBJ file of polylines: a `v x y z` line per point (metres, 9
-/// significant digits, so float32 values read back exactly) and an `l i j k ...` line per
-/// strand (1-based). Throws Error::runtime naming `path` if it cannot be written.
+/// significant digits, so float32 values read back exactly) and an `l i j` line per
+/// segment of every strand (1-based; a strand's segments share their vertices), which
+/// every OBJ importer reads whole (Blender 3.4's keeps only the ends of a longer `l`
+/// line). Throws Error::runtime naming `path` if it cannot be written.
 void write_obj_polylines(const std::filesystem::path& path, const StrandSet& strands,
                          const std::string& comment = {});
 
-/// Reads the `v` and `l` lines of an OBJ file as strands (each `l` line one strand, in
-/// order). Throws Error::bad_input naming the file and line for what it cannot read.
+/// Reads the `v` and `l` lines of an OBJ file as strands: an `l` line that starts at the
+/// vertex the one before it ended at goes on with it (segments written one per line),
+/// otherwise it starts a strand; in order. Throws Error::bad_input naming the file and
+/// line for what it cannot read.
 StrandSet read_obj_polylines(const std::filesystem::path& path);
 
 /// Writes `strands` as a cyHair file (.hair, www.cemyuksel.com/research/hairmodels): a
