@@ -38,10 +38,9 @@ def main(argv):
         if args.kind == "strands":
             made = hairstyle_io.import_strands(args.path, with_neighbours=True)
         else:
-            made = hairstyle_io.import_frames(args.path, args.first, args.end)
             extract = os.path.join(os.path.dirname(os.path.abspath(args.path)), "extract.h5")
-            if os.path.exists(extract):
-                hairstyle_io.import_body(extract, made.name + " body")
+            made = hairstyle_io.import_frames(args.path, args.first, args.end,
+                                              extract_path=extract if os.path.exists(extract) else None)
     except HairstyleFileError as error:
         print(f"hairstyle_cli: error: {error}", file=sys.stderr)
         return 2

@@ -142,6 +142,10 @@ class Frames:
         if points.ndim != 3 or points.shape[1:] != (len(self.rest_points), 3):
             raise HairstyleFileError(f"{path}: /frames/points has shape {points.shape}")
         self.fps = float(self.file.attrs.get("fps", 30.0))
+        self.head_rotation = _dataset(self.file, path, "/frames/head_rotation", 2, 4)
+        self.head_translation_m = _dataset(self.file, path, "/frames/head_translation_m", 2, 3)
+        if len(self.head_rotation) != len(self.index) or len(self.head_translation_m) != len(self.index):
+            raise HairstyleFileError(f"{path}: a head pose for each of {len(self.index)} frames expected")
 
     def __enter__(self):
         return self

@@ -22,6 +22,11 @@ except ImportError:
 FRAMES_PATH_PROPERTY = "hairstyle_frames_path"
 FRAMES_FIRST_PROPERTY = "hairstyle_frames_first"
 FRAMES_COUNT_PROPERTY = "hairstyle_frames_count"
+# ...and of a body that moves with the head of a frames.h5 (its path).
+FRAMES_BODY_PROPERTY = "hairstyle_frames_body_of"
+
+# Blender's axes from the files': (x, y, z) -> (x, -z, y).
+AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 
 
 def to_blender_axes(points):
@@ -33,6 +38,26 @@ def to_blender_axes(points):
 def _require_blender():
     if bpy is None:
         raise HairstyleFileError("these functions run inside Blender (blender -b --python ...)")
+
+
+def head_matrix(rotation_wxyz, translation_m):
+    """The 4 x 4 world-from-rest matrix of a head pose (a unit quaternion w, x, y, z and a
+    translation, in the files' axes), in Blender's axes: A [R t] A^T."""
+    w, x, y, z = (float(v) for v in rotation_wxyz)
+    rotation = np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ])
+    matrix = np.eye(4)
+    matrix[:3, :3] = AXES @ rotation @ AXES.T
+    matrix[:3, 3] = AXES @ np.asarray(translation_m, dtype=np.float64)
+    return matrix
+
+
+def _blender_matrix(matrix):
+    from mathutils import Matrix
+    return Matrix([[float(v) for v in row] for row in matrix])
 
 
 def _curves_object(name, points, offsets):
@@ -152,13 +177,15 @@ def _if_exists(path):
     return path if os.path.exists(path) else None
 
 
-def import_frames(frames_path, frame_start=0, frame_end=None, name=None):
+def import_frames(frames_path, frame_start=0, frame_end=None, name=None, extract_path=None):
     """frames.h5 as a hair curves object at its frame `frame_start` (the k-th stored), with
     "cluster", "style" and "style_colour" attributes; its points follow the file from
     Blender frame 1 (= frame_start) to frame_end - frame_start (a frame_change handler
-    reads each frame from the file, so nothing is copied into the .blend). Returns the
+    reads each frame from the file, so nothing is copied into the .blend). With
+    `extract_path`, the body too, moving with the head of each frame. Returns the hair
     object."""
     _require_blender()
+    body_data = hdf5_files.read_body(extract_path) if extract_path else None
     with hdf5_files.Frames(frames_path) as frames:
         count = len(frames)
         end = count if frame_end is None else frame_end
@@ -168,6 +195,8 @@ def import_frames(frames_path, frame_start=0, frame_end=None, name=None):
         points = frames.points(frame_start)
         offsets, cluster, cluster_style = frames.offsets, frames.cluster, frames.cluster_style
         fps = frames.fps
+        first_head = head_matrix(frames.head_rotation[frame_start],
+                                 frames.head_translation_m[frame_start])
     name = name or os.path.basename(os.path.dirname(os.path.abspath(frames_path))) or "frames"
 
     def build(made):
@@ -177,6 +206,13 @@ def import_frames(frames_path, frame_start=0, frame_end=None, name=None):
         curves_object[FRAMES_PATH_PROPERTY] = os.path.abspath(frames_path)
         curves_object[FRAMES_FIRST_PROPERTY] = int(frame_start)
         curves_object[FRAMES_COUNT_PROPERTY] = int(end - frame_start)
+        if body_data is not None:
+            body = import_body(extract_path, name + " body")
+            made.append(body)
+            body[FRAMES_BODY_PROPERTY] = os.path.abspath(frames_path)
+            body[FRAMES_FIRST_PROPERTY] = int(frame_start)
+            body[FRAMES_COUNT_PROPERTY] = int(end - frame_start)
+            body.matrix_world = _blender_matrix(first_head)
         scene = bpy.context.scene
         scene.frame_start, scene.frame_end = 1, int(end - frame_start)
         scene.render.fps = max(1, int(round(fps)))
@@ -199,10 +235,25 @@ def set_frame_points(curves_object, k):
     curves_object.data.update_tag()
 
 
+def set_frame_head(body, k):
+    """Moves a body that follows a frames.h5 to the head pose of the k-th frame of its range."""
+    path = body.get(FRAMES_BODY_PROPERTY)
+    count = int(body.get(FRAMES_COUNT_PROPERTY, 0))
+    if not path or count == 0:
+        return
+    k = min(max(k, 0), count - 1)
+    with hdf5_files.Frames(path) as frames:
+        row = int(body[FRAMES_FIRST_PROPERTY]) + k
+        matrix = head_matrix(frames.head_rotation[row], frames.head_translation_m[row])
+    body.matrix_world = _blender_matrix(matrix)
+
+
 def _on_frame_change(scene, *args):
-    for curves_object in scene.objects:
-        if curves_object.type == "CURVES" and FRAMES_PATH_PROPERTY in curves_object:
-            set_frame_points(curves_object, scene.frame_current - 1)
+    for obj in scene.objects:
+        if obj.type == "CURVES" and FRAMES_PATH_PROPERTY in obj:
+            set_frame_points(obj, scene.frame_current - 1)
+        elif FRAMES_BODY_PROPERTY in obj:
+            set_frame_head(obj, scene.frame_current - 1)
 
 
 def register_frame_handler():

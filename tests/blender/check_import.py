@@ -93,16 +93,26 @@ after = (len(bpy.data.objects), len(bpy.data.hair_curves), len(bpy.data.meshes),
          len(bpy.data.curves))
 check(before == after, "nothing half-built in the scene after the refusals")
 
-# frames.h5: frame 0, then the third frame through the frame handler.
-frames = hairstyle_io.import_frames(frames_path, 0, 3, name="frames")
+# frames.h5: frame 0, then the third frame through the frame handler; the body with the
+# head.
+frames = hairstyle_io.import_frames(frames_path, 0, 3, name="frames", extract_path=extract_path)
 with h5py.File(frames_path, "r") as file:
     frame_points = [file["/frames/points"][k] for k in range(3)]
+    head_rotation = file["/frames/head_rotation"][()]
+    head_translation = file["/frames/head_translation_m"][()]
 got, _ = curve_points(frames)
 check(np.array_equal(got, scene.to_blender_axes(frame_points[0])), "frames.h5: frame 0's points")
 bpy.context.scene.frame_set(3)
 got, _ = curve_points(frames)
 check(np.array_equal(got, scene.to_blender_axes(frame_points[2])),
       "frames.h5: Blender frame 3 shows the simulation's frame 2")
+from mathutils import Matrix, Quaternion  # noqa: E402
+axes = Matrix(((1, 0, 0), (0, 0, -1), (0, 1, 0)))
+expected = (axes @ Quaternion(head_rotation[2].tolist()).to_matrix() @ axes.transposed()).to_4x4()
+expected.translation = axes @ Matrix.Translation(head_translation[2].tolist()).translation
+moved = bpy.data.objects["frames body"].matrix_world
+check(all(abs(moved[i][j] - expected[i][j]) < 1e-6 for i in range(4) for j in range(4)),
+      "the body moves with the head of the simulation's frame 2")
 
 # Blender's own OBJ importer on hair-export's OBJ: every point, a strand's segments joined.
 bpy.ops.object.select_all(action="DESELECT")
