@@ -239,6 +239,7 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
   auto result = run_command(kBin / "hair-export",
                             {m.frames.string(), "--frames", "2:5", "--obj",
                              (folder / "obj").string(), "--usda", (folder / "braid.usda").string(),
+                             "--usda-animation", (folder / "anim" / "braid_2_5.usda").string(),
                              "--hair", (folder / "frame3.hair").string(), "--frame", "3"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   hair::h5::File file = hair::h5::File::open_read_only(m.frames);
@@ -254,11 +255,12 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
   EXPECT_EQ(hair_file.offsets, frames.rest.offsets);
   EXPECT_TRUE(hair_file.points == hair::read_frame_points(file, 3));
 
+  // The groom layer: the rest strands, exactly, with their attributes and no animation.
   hair::test::UsdaLayer layer = hair::test::parse_usda(read_file_bytes(folder / "braid.usda"));
   EXPECT_EQ(layer.metadata["upAxis"], "Y");
   EXPECT_EQ(layer.metadata["metersPerUnit"], "1");
-  EXPECT_EQ(layer.metadata["startTimeCode"], "2");
-  EXPECT_EQ(layer.metadata["endTimeCode"], "4");
+  EXPECT_EQ(layer.metadata.count("startTimeCode"), 0u);
+  EXPECT_TRUE(layer.point_samples.empty());
   ASSERT_EQ(layer.prims.size(), 2u);
   EXPECT_EQ(layer.prims[1], "BasisCurves Strands");
   const int64_t strands = frames.rest.strand_count(), points = frames.rest.point_count();
@@ -271,12 +273,37 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
        {"primvars:groom_id", "primvars:groom_guide", "primvars:cluster", "primvars:style"})
     EXPECT_EQ(static_cast<int64_t>(layer.arrays[primvar].size()), strands) << primvar;
   EXPECT_EQ(static_cast<int64_t>(layer.arrays["primvars:groom_root_uv"].size()), 2 * strands);
-  ASSERT_EQ(layer.point_samples.size(), 3u);
+  const std::vector<double>& rest = layer.arrays["points"];
+  ASSERT_EQ(static_cast<int64_t>(rest.size()), 3 * points);
+  for (int64_t i = 0; i < 3 * points; ++i)
+    ASSERT_EQ(static_cast<float>(rest[static_cast<size_t>(i)]), frames.rest.points.data()[i]) << i;
+  // The animation layer: over the groom layer (named relative to it), frames 2 to 4.
+  hair::test::UsdaLayer animation =
+      hair::test::parse_usda(read_file_bytes(folder / "anim" / "braid_2_5.usda"));
+  EXPECT_EQ(animation.metadata["subLayers"], "../braid.usda");
+  EXPECT_EQ(animation.metadata["startTimeCode"], "2");
+  EXPECT_EQ(animation.metadata["endTimeCode"], "4");
+  ASSERT_EQ(animation.prims.size(), 2u);
+  EXPECT_EQ(animation.prims[0], "over Groom");
+  EXPECT_EQ(animation.prims[1], "over Strands");
+  ASSERT_EQ(animation.point_samples.size(), 3u);
   hair::Points3f frame4 = hair::read_frame_points(file, 4);
-  const std::vector<double>& sample = layer.point_samples.at(4);
+  const std::vector<double>& sample = animation.point_samples.at(4);
   ASSERT_EQ(static_cast<int64_t>(sample.size()), 3 * points);
   for (int64_t i = 0; i < 3 * points; ++i)
     ASSERT_EQ(static_cast<float>(sample[static_cast<size_t>(i)]), frame4.data()[i]) << i;
+  // An animation layer without its groom layer is refused.
+  auto lone = run_command(kBin / "hair-export", {m.frames.string(), "--usda-animation",
+                                                 (folder / "lone.usda").string()});
+  EXPECT_EQ(lone.exit_code, 2);
+  EXPECT_NE(lone.err.find("needs the groom layer"), std::string::npos) << lone.err;
+  // ...and one over an existing groom layer names it.
+  auto over = run_command(kBin / "hair-export",
+                          {m.frames.string(), "--frames", "3:4", "--usda-animation",
+                           (folder / "over.usda").string(), "--over", (folder / "braid.usda").string()});
+  ASSERT_EQ(over.exit_code, 0) << over.err;
+  EXPECT_EQ(hair::test::parse_usda(read_file_bytes(folder / "over.usda")).metadata["subLayers"],
+            "braid.usda");
 }
 
 TEST_F(InterpolateCli, RendersAStillAndAVideo) {

@@ -17,7 +17,7 @@ struct UsdaLayer {
   std::map<std::string, std::vector<double>> arrays;  ///< "int[] curveVertexCounts", ...
   std::map<long, std::vector<double>> point_samples;  ///< time code -> flat xyz
   std::map<std::string, std::string> metadata;        ///< layer metadata, key = value text
-  std::vector<std::string> prims;                     ///< "Xform Groom", "BasisCurves Strands"
+  std::vector<std::string> prims;  ///< "Xform Groom", "BasisCurves Strands", "over Groom"
 };
 
 namespace usda_detail {
@@ -39,6 +39,11 @@ inline std::vector<Token> tokenise(const std::string& text) {
       ++i;
     } else if (c == '#') {
       while (i < text.size() && text[i] != '\n') ++i;
+    } else if (c == '@') {  // an asset path, @file.usda@
+      size_t end = text.find('@', i + 1);
+      if (end == std::string::npos) throw std::runtime_error("unterminated asset path");
+      tokens.push_back({Token::string, text.substr(i + 1, end - i - 1)});
+      i = end + 1;
     } else if (c == '"') {
       size_t end = text.find('"', i + 1);
       if (end == std::string::npos) throw std::runtime_error("unterminated string");
@@ -114,6 +119,15 @@ inline UsdaLayer parse_usda(const std::string& text) {
     while (tokens.at(i).text != ")") {
       std::string key = tokens.at(i).text;
       if (tokens.at(i + 1).text != "=") throw std::runtime_error("metadata " + key + " without =");
+      if (tokens.at(i + 2).text == "[") {  // a list (subLayers): its items, comma-separated
+        std::string items;
+        size_t j = i + 3;
+        for (; tokens.at(j).text != "]"; ++j)
+          if (tokens[j].text != ",") items += (items.empty() ? "" : ",") + tokens[j].text;
+        layer.metadata[key] = items;
+        i = j + 1;
+        continue;
+      }
       layer.metadata[key] = tokens.at(i + 2).text;
       i += 3;
     }
@@ -124,6 +138,9 @@ inline UsdaLayer parse_usda(const std::string& text) {
     if (t.kind == Token::word && t.text == "def") {
       layer.prims.push_back(tokens.at(i + 1).text + " " + tokens.at(i + 2).text);
       i += 2;
+    } else if (t.kind == Token::word && t.text == "over") {
+      layer.prims.push_back("over " + tokens.at(i + 1).text);
+      i += 1;
     } else if (t.kind == Token::word && i + 2 < tokens.size() &&
                tokens[i + 1].kind == Token::word && tokens[i + 2].text == "=" &&
                tokens.at(i + 3).text == "[") {

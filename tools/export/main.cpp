@@ -1,6 +1,7 @@
 // hair-export: the strands of interpolate's frames.h5 in formats that hair tools read:
-// ASCII USD (.usda) BasisCurves with time-sampled points and the Alembic groom attributes
-// as primvars, OBJ polylines (one file per frame) and cyHair .hair (one frame).
+// ASCII USD (.usda): the rest groom as BasisCurves with the Alembic groom attributes as
+// primvars, and on request a layer of the animation over it; OBJ polylines (one file per
+// frame) and cyHair .hair (one frame).
 // docs/interpolate.md describes the formats and the mapping to the groom conventions.
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -73,13 +74,20 @@ std::vector<Eigen::Vector2f> root_uvs(const hair::StrandSet& strands) {
 int main(int argc, char** argv) {
   CLI::App app("Export the strands of frames.h5 (interpolate) to USD, OBJ and cyHair.",
                "hair-export");
-  std::string input_path, usda_path, obj_dir, hair_path, frames_text;
+  std::string input_path, usda_path, animation_path, over_path, obj_dir, hair_path, frames_text;
   int64_t frame = -1;
   double width_m = 8e-5;
   app.add_option("FRAMES_H5", input_path, "frames.h5 from the interpolate stage")->required();
   app.add_option("--usda", usda_path,
-                 "ASCII USD file: BasisCurves with the points of every frame of --frames as "
-                 "time samples, and the groom attributes");
+                 "ASCII USD file of the rest groom: BasisCurves with the groom attributes, "
+                 "no animation");
+  app.add_option("--usda-animation", animation_path,
+                 "ASCII USD layer of the points of every frame of --frames as time samples, "
+                 "over the groom layer (which it names in subLayers): the --usda one, or "
+                 "--over");
+  app.add_option("--over", over_path,
+                 "--usda-animation: an existing groom layer (--usda of an earlier run) to "
+                 "animate, instead of writing one now");
   app.add_option("--obj", obj_dir,
                  "folder for OBJ polylines, one file per frame of --frames "
                  "(frame_NNNN.obj, NNNN the simulation's frame)");
@@ -93,7 +101,13 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
-    if (usda_path.empty() && obj_dir.empty() && hair_path.empty())
+    if (!animation_path.empty() && usda_path.empty() == over_path.empty())
+      throw CLI::ValidationError(
+          "--usda-animation needs the groom layer it animates: --usda (written now) or --over "
+          "(an existing one), one of them");
+    if (!over_path.empty() && animation_path.empty())
+      throw CLI::ValidationError("--over names the groom layer of --usda-animation");
+    if (usda_path.empty() && obj_dir.empty() && hair_path.empty() && animation_path.empty())
       throw CLI::ValidationError("nothing to do: give --usda, --obj or --hair");
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
@@ -129,10 +143,23 @@ int main(int argc, char** argv) {
       curves.width_m = widths;
       curves.fps = frames.fps;
       curves.comment = note;
+      if (fs::path parent = fs::path(usda_path).parent_path(); !parent.empty())
+        fs::create_directories(parent);
+      hair::write_usda_groom(usda_path, curves, strands.points);
+    }
+    if (!animation_path.empty()) {
+      const fs::path groom = usda_path.empty() ? fs::path(over_path) : fs::path(usda_path);
+      if (!fs::is_regular_file(groom))
+        throw hair::Error::bad_input(groom.string(), "no such groom layer to animate");
+      if (fs::path parent = fs::path(animation_path).parent_path(); !parent.empty())
+        fs::create_directories(parent);
       std::vector<int64_t> codes;
       for (int64_t row : rows) codes.push_back(frames.index[static_cast<size_t>(row)]);
-      hair::write_usda(usda_path, curves, codes,
-                       [&](size_t k) { return hair::read_frame_points(file, rows[k]); });
+      const std::string groom_layer =
+          fs::relative(fs::absolute(groom), fs::absolute(animation_path).parent_path())
+              .generic_string();
+      hair::write_usda_animation(animation_path, groom_layer, frames.fps, note, codes,
+                                 [&](size_t k) { return hair::read_frame_points(file, rows[k]); });
     }
     if (!obj_dir.empty()) {
       fs::create_directories(obj_dir);

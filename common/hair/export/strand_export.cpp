@@ -1,5 +1,7 @@
 #include "hair/export/strand_export.h"
 
+#include <charconv>
+
 #include <array>
 #include <cstring>
 #include <fstream>
@@ -185,9 +187,41 @@ StrandSet read_cyhair(const std::filesystem::path& path) {
   return strands;
 }
 
-void write_usda(const std::filesystem::path& path, const UsdaCurves& curves,
-                const std::vector<int64_t>& frames,
-                const std::function<Points3f(size_t)>& frame_points) {
+namespace {
+
+/// The shortest decimal text that reads back as the same float (std::to_chars).
+std::string shortest(float value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+/// Writes points as a USD point3f list, each coordinate in its shortest exact text and no
+/// spaces (USD's text format needs none; a tenth of the size).
+void write_points(std::ostream& out, const Points3f& points) {
+  out << '[';
+  for (Eigen::Index row = 0; row < points.rows(); ++row)
+    out << (row ? ",(" : "(") << shortest(points(row, 0)) << ',' << shortest(points(row, 1))
+        << ',' << shortest(points(row, 2)) << ')';
+  out << ']';
+}
+
+/// The layer's metadata: metres, +Y up, the time codes of `frames` (none: no range).
+void write_layer_header(std::ostream& out, const std::string& comment, double fps,
+                        const std::vector<int64_t>& frames, const std::string& sublayer) {
+  out << "#usda 1.0\n(\n    defaultPrim = \"Groom\"\n    doc = \"hairstyle interpolate: " << comment
+      << "\"\n    metersPerUnit = 1\n    upAxis = \"Y\"\n";
+  if (!sublayer.empty()) out << "    subLayers = [\n        @" << sublayer << "@\n    ]\n";
+  if (!frames.empty())
+    out << "    startTimeCode = " << frames.front() << "\n    endTimeCode = " << frames.back()
+        << "\n";
+  out << "    timeCodesPerSecond = " << fps << "\n    framesPerSecond = " << fps << "\n)\n\n";
+}
+
+}  // namespace
+
+void write_usda_groom(const std::filesystem::path& path, const UsdaCurves& curves,
+                      const Points3f& rest_points) {
   const auto strand_count = static_cast<int64_t>(curves.offsets.size()) - 1;
   std::ofstream out = open_output(path);
   auto ints = [&](const auto& values) {
@@ -195,13 +229,7 @@ void write_usda(const std::filesystem::path& path, const UsdaCurves& curves,
     for (size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i];
     out << ']';
   };
-  out << "#usda 1.0\n(\n    defaultPrim = \"Groom\"\n    doc = \"hairstyle interpolate: "
-      << curves.comment << "\"\n    metersPerUnit = 1\n    upAxis = \"Y\"\n";
-  if (!frames.empty())
-    out << "    startTimeCode = " << frames.front() << "\n    endTimeCode = " << frames.back()
-        << "\n";
-  out << "    timeCodesPerSecond = " << curves.fps << "\n    framesPerSecond = " << curves.fps
-      << "\n)\n\n";
+  write_layer_header(out, curves.comment, curves.fps, {}, "");
   out << "def Xform \"Groom\" (\n    kind = \"component\"\n)\n{\n";
   out << "    def BasisCurves \"Strands\"\n    {\n        uniform token type = \"linear\"\n";
   out << "        uniform token wrap = \"nonperiodic\"\n";
@@ -211,19 +239,15 @@ void write_usda(const std::filesystem::path& path, const UsdaCurves& curves,
                      curves.offsets[static_cast<size_t>(s)]);
   out << "        int[] curveVertexCounts = ";
   ints(counts);
-  out << "\n        point3f[] points.timeSamples = {\n";
-  for (size_t k = 0; k < frames.size(); ++k) {
-    Points3f points = frame_points(k);
-    out << "            " << frames[k] << ": [";
-    for (Eigen::Index row = 0; row < points.rows(); ++row)
-      out << (row ? ", " : "") << '(' << exact(points(row, 0)) << ", " << exact(points(row, 1))
-          << ", " << exact(points(row, 2)) << ')';
-    out << "],\n";
+  out << "\n        point3f[] points = ";
+  write_points(out, rest_points);
+  // Widths to three digits: a render hint, half the size of exact floats.
+  out << "\n        float[] widths = [";
+  char width[32];
+  for (size_t i = 0; i < curves.width_m.size(); ++i) {
+    std::snprintf(width, sizeof width, "%.3g", static_cast<double>(curves.width_m[i]));
+    out << (i ? "," : "") << width;
   }
-  out << "        }\n";
-  out << "        float[] widths = [";
-  for (size_t i = 0; i < curves.width_m.size(); ++i)
-    out << (i ? ", " : "") << exact(curves.width_m[i]);
   out << "] (\n            interpolation = \"vertex\"\n        )\n";
   out << "        int[] primvars:groom_id = ";
   ints(curves.groom_id);
@@ -233,8 +257,8 @@ void write_usda(const std::filesystem::path& path, const UsdaCurves& curves,
   out << " (\n            interpolation = \"uniform\"\n        )\n";
   out << "        texCoord2f[] primvars:groom_root_uv = [";
   for (size_t i = 0; i < curves.root_uv.size(); ++i)
-    out << (i ? ", " : "") << '(' << exact(curves.root_uv[i].x()) << ", "
-        << exact(curves.root_uv[i].y()) << ')';
+    out << (i ? ", " : "") << '(' << shortest(curves.root_uv[i].x()) << ", "
+        << shortest(curves.root_uv[i].y()) << ')';
   out << "] (\n            interpolation = \"uniform\"\n        )\n";
   out << "        int[] primvars:cluster = ";
   ints(curves.cluster);
@@ -243,6 +267,23 @@ void write_usda(const std::filesystem::path& path, const UsdaCurves& curves,
   ints(curves.style);
   out << " (\n            interpolation = \"uniform\"\n        )\n";
   out << "    }\n}\n";
+  finish(out, path);
+}
+
+void write_usda_animation(const std::filesystem::path& path, const std::string& groom_layer,
+                          double fps, const std::string& comment,
+                          const std::vector<int64_t>& frames,
+                          const std::function<Points3f(size_t)>& frame_points) {
+  std::ofstream out = open_output(path);
+  write_layer_header(out, comment, fps, frames, groom_layer);
+  out << "over \"Groom\"\n{\n    over \"Strands\"\n    {\n";
+  out << "        point3f[] points.timeSamples = {\n";
+  for (size_t k = 0; k < frames.size(); ++k) {
+    out << "            " << frames[k] << ": ";
+    write_points(out, frame_points(k));
+    out << ",\n";
+  }
+  out << "        }\n    }\n}\n";
   finish(out, path);
 }
 

@@ -54,13 +54,22 @@ struct UsdaCurves {
   std::string comment;  ///< goes into the layer's doc string
 };
 
-/// Writes an ASCII USD layer: /Groom (Xform, metres: metersPerUnit 1, Y up) with a
-/// BasisCurves prim "Strands" (type linear, curveVertexCounts, widths per vertex, the
-/// primvars groom_id, groom_guide, groom_root_uv, cluster and style per curve) whose
-/// points are time-sampled at `frames` (time codes) by `frame_points(k)` (#points x 3 of
-/// the k-th frame); time codes per second = fps. Throws Error::runtime naming `path`.
-void write_usda(const std::filesystem::path& path, const UsdaCurves& curves,
-                const std::vector<int64_t>& frames,
-                const std::function<Points3f(size_t)>& frame_points);
+/// Writes the rest groom as an ASCII USD layer: /Groom (Xform, metres: metersPerUnit 1,
+/// Y up) with a BasisCurves prim "Strands" (type linear, curveVertexCounts, the points
+/// `rest_points` (#points x 3) in their shortest exact text, widths per vertex to three
+/// digits, the primvars groom_id, groom_guide, groom_root_uv, cluster and style per
+/// curve), no animation. Throws Error::runtime naming `path`.
+void write_usda_groom(const std::filesystem::path& path, const UsdaCurves& curves,
+                      const Points3f& rest_points);
+
+/// Writes an ASCII USD layer of the points' animation over the groom layer `groom_layer`
+/// (its path as the layer names it, relative to this layer's folder, in subLayers): an
+/// `over` of /Groom/Strands whose points are time-sampled at `frames` (time codes, per
+/// second `fps`) by `frame_points(k)` (#points x 3 of the k-th frame). Opening it gives
+/// the animated groom. Throws Error::runtime naming `path`.
+void write_usda_animation(const std::filesystem::path& path, const std::string& groom_layer,
+                          double fps, const std::string& comment,
+                          const std::vector<int64_t>& frames,
+                          const std::function<Points3f(size_t)>& frame_points);
 
 }  // namespace hair
