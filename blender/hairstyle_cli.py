@@ -2,6 +2,7 @@
 #
 #   blender -b --python blender/hairstyle_cli.py -- strands OUT/m/strands.h5 [--save m.blend]
 #   blender -b --python blender/hairstyle_cli.py -- frames OUT/m/frames.h5 [--first 0] [--end 30] [--save m.blend]
+#   blender -b --python blender/hairstyle_cli.py -- frames OUT/m/guides.h5 ...   (the simulated guides)
 #
 # strands: strands.h5 with styles.h5 and extract.h5 from the same folder when present;
 # frames: frames.h5 from frame --first to --end - 1 (the body from extract.h5 beside it).
@@ -23,7 +24,7 @@ def main(argv):
     parser = argparse.ArgumentParser(prog="hairstyle_cli.py",
                                      description="Import hairstyle HDF5 files into Blender.")
     parser.add_argument("kind", choices=["strands", "frames"])
-    parser.add_argument("path", help="strands.h5 or frames.h5")
+    parser.add_argument("path", help="strands.h5, or frames.h5 or guides.h5")
     parser.add_argument("--first", type=int, default=0, help="frames: the first frame")
     parser.add_argument("--end", type=int, default=None, help="frames: one past the last")
     parser.add_argument("--save", help="write the scene to this .blend file")

@@ -3,8 +3,9 @@
 # File > Import > hairstyle strands (.h5) reads strands.h5 (grow) as a hair curves
 # object, with each strand's cluster and the cluster's style (from styles.h5 beside it)
 # as curve attributes and a colour attribute in the paper's colours; frames.h5
-# (interpolate) as the same strands at one frame or animated over a frame range; and the
-# body from extract.h5. Headless:
+# (interpolate) or guides.h5 (simulate) as the strands or guides at one frame or animated
+# over a frame range, the body moving with the head; and the body from extract.h5.
+# Headless:
 #
 #   blender -b --python blender/hairstyle_cli.py -- strands OUT/m/strands.h5 --save m.blend
 #
@@ -23,6 +24,8 @@ bl_info = {
     "category": "Import-Export",
 }
 
+import os  # noqa: E402
+
 from . import hdf5_files  # noqa: E402
 from .scene import import_body, import_frames, import_strands  # noqa: E402
 
@@ -38,7 +41,7 @@ except ImportError:  # imported outside Blender (the readers alone)
 if bpy is not None:
 
     class IMPORT_OT_hairstyle_strands(bpy.types.Operator, ImportHelper):
-        """Import the hairstyle pipeline's strands.h5 (with styles.h5 and extract.h5 beside it) or frames.h5"""
+        """Import the hairstyle pipeline's strands.h5 (with styles.h5 and extract.h5 beside it), frames.h5 or guides.h5"""
 
         bl_idname = "import_curves.hairstyle_strands"
         bl_label = "Import hairstyle strands"
@@ -46,15 +49,17 @@ if bpy is not None:
         filename_ext = ".h5"
         filter_glob: StringProperty(default="*.h5", options={"HIDDEN"})
         frame_start: IntProperty(name="First frame", default=0, min=0,
-                                 description="frames.h5: the first simulation frame to animate")
+                                 description="frames.h5, guides.h5: the first frame to animate")
         frame_end: IntProperty(name="End frame", default=-1,
-                               description="frames.h5: one past the last frame (-1: all)")
+                               description="frames.h5, guides.h5: one past the last frame (-1: all)")
 
         def execute(self, context):
             try:
-                if hdf5_files.schema_of(self.filepath) == "hairstyle.frames":
+                if hdf5_files.schema_of(self.filepath) in ("hairstyle.frames", "hairstyle.guides"):
+                    extract = os.path.join(os.path.dirname(self.filepath), "extract.h5")
                     import_frames(self.filepath, self.frame_start,
-                                  None if self.frame_end < 0 else self.frame_end)
+                                  None if self.frame_end < 0 else self.frame_end,
+                                  extract_path=extract if os.path.exists(extract) else None)
                 else:
                     import_strands(self.filepath, with_neighbours=True)
             except hdf5_files.HairstyleFileError as error:

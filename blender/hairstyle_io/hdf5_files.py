@@ -12,6 +12,7 @@ SCHEMA_VERSIONS = {
     "hairstyle.strands": 2,
     "hairstyle.styles": 3,
     "hairstyle.frames": 1,
+    "hairstyle.guides": 1,
 }
 
 # The style enum of styles.h5 and frames.h5, and the paper's colours (Figure 9), RGB 0-1.
@@ -125,22 +126,30 @@ def read_body(path):
 
 
 class Frames:
-    """frames.h5, opened: rest strands, per-strand cluster and style, frames read one at
-    a time (each is one compressed chunk)."""
+    """frames.h5 (interpolate: every strand) or guides.h5 (simulate: the guides), opened:
+    rest strands, per-strand cluster and the clusters' styles, the head's pose per frame,
+    frames read one at a time (each is one compressed chunk)."""
 
     def __init__(self, path):
         self.path = path
-        self.file = _open(path, "hairstyle.frames")
-        self.offsets = _dataset(self.file, path, "/strands/offsets", 1).astype(np.int64)
-        self.rest_points = _dataset(self.file, path, "/strands/rest_points", 2, 3)
+        schema = schema_of(path)
+        guides = schema == "hairstyle.guides"
+        self.file = _open(path, "hairstyle.guides" if guides else "hairstyle.frames")
+        group = "/guides" if guides else "/strands"
+        self.offsets = _dataset(self.file, path, group + "/offsets", 1).astype(np.int64)
+        self.rest_points = _dataset(self.file, path, group + "/rest_points", 2, 3)
         _check_offsets(path, self.offsets, len(self.rest_points))
-        self.cluster = _dataset(self.file, path, "/strands/cluster", 1).astype(np.int32)
+        self.cluster = _dataset(self.file, path, group + "/cluster", 1).astype(np.int32)
         self.cluster_style = _dataset(self.file, path, "/clusters/style", 1).astype(np.int32)
-        self.index = _dataset(self.file, path, "/frames/index", 1).astype(np.int64)
         self.time_s = _dataset(self.file, path, "/frames/time_s", 1).astype(np.float64)
-        points = self.file["/frames/points"]
-        if points.ndim != 3 or points.shape[1:] != (len(self.rest_points), 3):
-            raise HairstyleFileError(f"{path}: /frames/points has shape {points.shape}")
+        self.points_name = "/frames/guide_points" if guides else "/frames/points"
+        self.index = (np.arange(len(self.time_s)) if guides
+                      else _dataset(self.file, path, "/frames/index", 1).astype(np.int64))
+        points = self.file[self.points_name] if self.points_name in self.file else None
+        if points is None or points.ndim != 3 or points.shape[1:] != (len(self.rest_points), 3) \
+                or points.shape[0] != len(self.index):
+            raise HairstyleFileError(f"{path}: {self.points_name} is not one frame of every "
+                                     f"point per time")
         self.fps = float(self.file.attrs.get("fps", 30.0))
         self.head_rotation = _dataset(self.file, path, "/frames/head_rotation", 2, 4)
         self.head_translation_m = _dataset(self.file, path, "/frames/head_translation_m", 2, 3)
@@ -161,4 +170,4 @@ class Frames:
 
     def points(self, k):
         """The points of the k-th frame stored (n x 3, metres, +Y up)."""
-        return self.file["/frames/points"][k].astype(np.float32)
+        return self.file[self.points_name][k].astype(np.float32)

@@ -178,7 +178,7 @@ def _if_exists(path):
 
 
 def import_frames(frames_path, frame_start=0, frame_end=None, name=None, extract_path=None):
-    """frames.h5 as a hair curves object at its frame `frame_start` (the k-th stored), with
+    """frames.h5 (or guides.h5) as a hair curves object at its frame `frame_start` (the k-th stored), with
     "cluster", "style" and "style_colour" attributes; its points follow the file from
     Blender frame 1 (= frame_start) to frame_end - frame_start (a frame_change handler
     reads each frame from the file, so nothing is copied into the .blend). With

@@ -2,7 +2,7 @@
 # (InterpolateCli.BlenderImportsEveryStrandPointAndFrame):
 #
 #   blender -b --factory-startup --python-exit-code 1 --python tests/blender/check_import.py \
-#     -- ADDON_DIR STRANDS_H5 STYLES_H5 EXTRACT_H5 FRAMES_H5 OBJ_FILE
+#     -- ADDON_DIR STRANDS_H5 STYLES_H5 EXTRACT_H5 FRAMES_H5 OBJ_FILE GUIDES_H5
 #
 # Imports the files through the hairstyle_io add-on and Blender's own OBJ importer and
 # checks every strand and point against the HDF5 files read with h5py; refused files
@@ -15,7 +15,7 @@ import bpy
 import numpy as np
 
 arguments = sys.argv[sys.argv.index("--") + 1:]
-addon_dir, strands_path, styles_path, extract_path, frames_path, obj_path = arguments
+addon_dir, strands_path, styles_path, extract_path, frames_path, obj_path, guides_path = arguments
 sys.path.insert(0, addon_dir)
 
 import h5py  # noqa: E402
@@ -113,6 +113,16 @@ expected.translation = axes @ Matrix.Translation(head_translation[2].tolist()).t
 moved = bpy.data.objects["frames body"].matrix_world
 check(all(abs(moved[i][j] - expected[i][j]) < 1e-6 for i in range(4) for j in range(4)),
       "the body moves with the head of the simulation's frame 2")
+
+# guides.h5: the simulated guides, each with its points, at frame 1 of the file.
+guides = hairstyle_io.import_frames(guides_path, 1, 2, name="guides")
+with h5py.File(guides_path, "r") as file:
+    guide_offsets = file["/guides/offsets"][()]
+    guide_points = file["/frames/guide_points"][1]
+got, got_offsets = curve_points(guides)
+check(np.array_equal(got_offsets, guide_offsets) and
+      np.array_equal(got, scene.to_blender_axes(guide_points)),
+      f"guides.h5: {len(guide_offsets) - 1} guides with every point of its frame 1")
 
 # Blender's own OBJ importer on hair-export's OBJ: every point, a strand's segments joined.
 bpy.ops.object.select_all(action="DESELECT")

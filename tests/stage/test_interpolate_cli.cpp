@@ -226,7 +226,8 @@ TEST_F(InterpolateCli, BlenderImportsEveryStrandPointAndFrame) {
       blender, {"-b", "--factory-startup", "--python-exit-code", "1", "--python",
                 (source / "tests" / "blender" / "check_import.py").string(), "--",
                 (source / "blender").string(), m.out.strands.string(), m.styles.string(),
-                m.out.extract.string(), m.frames.string(), (folder / "frame_0000.obj").string()});
+                m.out.extract.string(), m.frames.string(), (folder / "frame_0000.obj").string(),
+                m.guides.string()});
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
   EXPECT_NE(result.out.find("check: all passed"), std::string::npos) << result.out << result.err;
   EXPECT_NE(result.out.find("Blender's OBJ importer keeps all"), std::string::npos) << result.out;
