@@ -25,6 +25,8 @@ packages=(
   # the Blender add-on's test (blender/, tests/blender/): Debian's Blender runs on the
   # system Python, where python3-h5py reads the HDF5 files
   blender python3-h5py
+  # the pipeline through a single-node Slurm (scripts/slurm-local.sh, tests/slurm/)
+  slurm-wlm munge
   # h5ls, h5dump: to look into the pipeline's outputs
   hdf5-tools
   # functions' extents for the layout test (scripts/check-function-length.sh)

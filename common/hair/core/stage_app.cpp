@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <new>
 #include <string_view>
 #include <utility>
@@ -51,7 +52,7 @@ StageApp::StageApp(std::string stage_name, const std::string& description)
   app_.add_flag("--reproducible", reproducible_,
                 "Leave the date and the wall time out of provenance, so that reruns give "
                 "identical files");
-  app_.add_option("--threads", threads_, "OpenMP threads, 0 = all")
+  app_.add_option("--threads", threads_, "OpenMP threads, 0 = all (inside a Slurm job: its SLURM_CPUS_PER_TASK)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 }
@@ -108,6 +109,14 @@ int StageApp::parse(int argc, const char* const* argv) {
   return -1;
 }
 
+int slurm_cpus_per_task() {
+  const char* text = std::getenv("SLURM_CPUS_PER_TASK");
+  if (!text || !*text) return 0;
+  char* end = nullptr;
+  const long cpus = std::strtol(text, &end, 10);
+  return end && *end == '\0' && cpus > 0 && cpus < 100000 ? static_cast<int>(cpus) : 0;
+}
+
 int StageApp::run(int argc, const char* const* argv, const std::function<void()>& body) {
   start_ = std::chrono::steady_clock::now();
   log::init(stage_name_, log::Verbosity::normal);  // parse errors are reported through it
@@ -116,7 +125,12 @@ int StageApp::run(int argc, const char* const* argv, const std::function<void()>
   log::init(stage_name_, quiet_     ? log::Verbosity::quiet
                          : verbose_ ? log::Verbosity::verbose
                                     : log::Verbosity::normal);
-  if (threads_ > 0) omp_set_num_threads(threads_);
+  if (threads_ > 0) {
+    omp_set_num_threads(threads_);
+  } else if (const int slurm_cpus = slurm_cpus_per_task(); slurm_cpus > 0) {
+    // "All cores" inside a Slurm job means the CPUs the job was given, not the node's.
+    omp_set_num_threads(slurm_cpus);
+  }
   spdlog::debug("parameters: {}", params_.effective_json().dump());
   spdlog::debug("OpenMP threads: {}", omp_get_max_threads());
 

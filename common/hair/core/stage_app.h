@@ -20,6 +20,10 @@ namespace hair {
 ///   --threads N          OpenMP threads, 0 = all
 /// A stage adds its positional inputs through cli() and its parameters through params(),
 /// then calls run() with the body of the stage.
+/// The CPUs a Slurm job step was given (SLURM_CPUS_PER_TASK), or 0 outside one (or for a
+/// value that is not a positive whole number). --threads 0 uses them.
+int slurm_cpus_per_task();
+
 class StageApp {
  public:
   StageApp(std::string stage_name, const std::string& description);

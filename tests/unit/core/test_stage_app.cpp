@@ -2,6 +2,7 @@
 #include <omp.h>
 #include <spdlog/spdlog.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <new>
 #include <stdexcept>
@@ -240,6 +241,33 @@ TEST_F(StageAppTest, ThreadsOptionSetsOpenMpThreads) {
 
   FakeStage negative;
   EXPECT_EQ(run_stage(negative, {"in.h5", "-o", "out.h5", "--threads", "-1"}).exit_code, 2);
+}
+
+TEST_F(StageAppTest, InsideASlurmJobAllCoresMeansTheCpusItWasGiven) {
+  const int threads_before = omp_get_max_threads();
+  ::setenv("SLURM_CPUS_PER_TASK", "3", 1);
+  EXPECT_EQ(hair::slurm_cpus_per_task(), 3);
+  FakeStage stage;
+  int threads_in_body = 0;
+  EXPECT_EQ(run_stage(stage, {"in.h5", "-o", "out.h5", "--threads", "0"},
+                      [&] { threads_in_body = omp_get_max_threads(); })
+                .exit_code,
+            0);
+  EXPECT_EQ(threads_in_body, 3);
+  // --threads N wins over Slurm's count; a value that is not a count is ignored.
+  FakeStage explicit_count;
+  EXPECT_EQ(run_stage(explicit_count, {"in.h5", "-o", "out.h5", "--threads", "2"},
+                      [&] { threads_in_body = omp_get_max_threads(); })
+                .exit_code,
+            0);
+  EXPECT_EQ(threads_in_body, 2);
+  for (const char* bad : {"", "0", "-2", "2x", "many"}) {
+    ::setenv("SLURM_CPUS_PER_TASK", bad, 1);
+    EXPECT_EQ(hair::slurm_cpus_per_task(), 0) << bad;
+  }
+  ::unsetenv("SLURM_CPUS_PER_TASK");
+  EXPECT_EQ(hair::slurm_cpus_per_task(), 0);
+  omp_set_num_threads(threads_before);
 }
 
 }  // namespace
