@@ -707,6 +707,25 @@ void add_braid(const ComponentSpec& component, int component_index, const Defect
 /// The patch of `piece`: rows along the stream, `piece.rails` points across; returns
 /// the patch and appends its vertex positions (x, y, z each) to `positions`, the arc
 /// length of each vertex to `vertex_along_m`, its faces to `mesh` and their UVs to `uv`.
+/// Draws a patch's vertex-order and triangulation defects (into `patch`) and returns, per
+/// natural index r * columns + c, the vertex's id within the patch: natural, rows reversed
+/// (numbered tip to root) or shuffled.
+std::vector<int32_t> draw_vertex_ids(int rows, int columns, const DefectSpec& defects, Rng& rng,
+                                     SynthPatch& patch) {
+  const double draw = rng.uniform(0, 1);
+  patch.order = draw < defects.reversed_share                            ? VertexOrder::reversed
+                : draw < defects.reversed_share + defects.shuffled_share ? VertexOrder::shuffled
+                                                                         : VertexOrder::natural;
+  patch.triangulated = rng.chance(defects.triangulate_share);
+  std::vector<int32_t> id(static_cast<size_t>(rows * columns));  // natural index -> id in patch
+  std::iota(id.begin(), id.end(), 0);
+  if (patch.order == VertexOrder::reversed)
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < columns; ++c) id[r * columns + c] = (rows - 1 - r) * columns + c;
+  if (patch.order == VertexOrder::shuffled) rng.shuffle(id);
+  return id;
+}
+
 SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpec& defects,
                        const Head& head, Rng& rng, std::vector<float>& positions, PolyMesh& mesh,
                        std::vector<float>& uv, std::vector<float>& vertex_along_m) {
@@ -720,17 +739,7 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
       2,
       static_cast<int>(std::lround((piece.end_m - piece.start_m) / defects.segment_length_m)) + 1);
   int count = rows * columns;
-  double draw = rng.uniform(0, 1);
-  patch.order = draw < defects.reversed_share                            ? VertexOrder::reversed
-                : draw < defects.reversed_share + defects.shuffled_share ? VertexOrder::shuffled
-                                                                         : VertexOrder::natural;
-  patch.triangulated = rng.chance(defects.triangulate_share);
-  std::vector<int32_t> id(static_cast<size_t>(count));  // natural index -> id in patch
-  std::iota(id.begin(), id.end(), 0);
-  if (patch.order == VertexOrder::reversed)
-    for (int r = 0; r < rows; ++r)
-      for (int c = 0; c < columns; ++c) id[r * columns + c] = (rows - 1 - r) * columns + c;
-  if (patch.order == VertexOrder::shuffled) rng.shuffle(id);
+  const std::vector<int32_t> id = draw_vertex_ids(rows, columns, defects, rng, patch);
 
   auto base = static_cast<int32_t>(vertex_along_m.size());
   patch.first_vertex = base;
@@ -794,17 +803,7 @@ SynthPatch build_tube_patch(const Stream& stream, const Piece& piece, int sides,
       2,
       static_cast<int>(std::lround((piece.end_m - piece.start_m) / defects.segment_length_m)) + 1);
   int count = rows * sides;
-  double draw = rng.uniform(0, 1);
-  patch.order = draw < defects.reversed_share                            ? VertexOrder::reversed
-                : draw < defects.reversed_share + defects.shuffled_share ? VertexOrder::shuffled
-                                                                         : VertexOrder::natural;
-  patch.triangulated = rng.chance(defects.triangulate_share);
-  std::vector<int32_t> id(static_cast<size_t>(count));
-  std::iota(id.begin(), id.end(), 0);
-  if (patch.order == VertexOrder::reversed)
-    for (int r = 0; r < rows; ++r)
-      for (int c = 0; c < sides; ++c) id[r * sides + c] = (rows - 1 - r) * sides + c;
-  if (patch.order == VertexOrder::shuffled) rng.shuffle(id);
+  const std::vector<int32_t> id = draw_vertex_ids(rows, sides, defects, rng, patch);
   auto base = static_cast<int32_t>(vertex_along_m.size());
   patch.first_vertex = base;
   patch.vertex_count = count;
