@@ -222,28 +222,33 @@ def import_frames(frames_path, frame_start=0, frame_end=None, name=None, extract
     return _removing_on_failure([], build)
 
 
+def _frame_row(obj, path_property, k):
+    """The file and the row of its k-th frame (0 based, held to the range) that an object
+    following a frames.h5 or guides.h5 shows; (None, None) for one that follows none."""
+    path = obj.get(path_property)
+    count = int(obj.get(FRAMES_COUNT_PROPERTY, 0))
+    if not path or count == 0:
+        return None, None
+    return path, int(obj[FRAMES_FIRST_PROPERTY]) + min(max(k, 0), count - 1)
+
+
 def set_frame_points(curves_object, k):
     """Sets a frames object's points to the k-th frame of its range (0 based)."""
-    path = curves_object.get(FRAMES_PATH_PROPERTY)
-    count = int(curves_object.get(FRAMES_COUNT_PROPERTY, 0))
-    if not path or count == 0:
+    path, row = _frame_row(curves_object, FRAMES_PATH_PROPERTY, k)
+    if path is None:
         return
-    k = min(max(k, 0), count - 1)
     with hdf5_files.Frames(path) as frames:
-        points = frames.points(int(curves_object[FRAMES_FIRST_PROPERTY]) + k)
+        points = frames.points(row)
     curves_object.data.position_data.foreach_set("vector", to_blender_axes(points).ravel())
     curves_object.data.update_tag()
 
 
 def set_frame_head(body, k):
     """Moves a body that follows a frames.h5 to the head pose of the k-th frame of its range."""
-    path = body.get(FRAMES_BODY_PROPERTY)
-    count = int(body.get(FRAMES_COUNT_PROPERTY, 0))
-    if not path or count == 0:
+    path, row = _frame_row(body, FRAMES_BODY_PROPERTY, k)
+    if path is None:
         return
-    k = min(max(k, 0), count - 1)
     with hdf5_files.Frames(path) as frames:
-        row = int(body[FRAMES_FIRST_PROPERTY]) + k
         matrix = head_matrix(frames.head_rotation[row], frames.head_translation_m[row])
     body.matrix_world = _blender_matrix(matrix)
 

@@ -726,6 +726,23 @@ std::vector<int32_t> draw_vertex_ids(int rows, int columns, const DefectSpec& de
   return id;
 }
 
+/// Appends the cell between rows r, r + 1 and columns c, c + 1 as a quad, or as two
+/// triangles; `corner(r, c)` gives a corner's vertex id and records its texture
+/// coordinates, once per face corner, in the faces' corner order.
+template <typename Corner>
+void append_cell(PolyMesh& mesh, bool triangulated, Corner&& corner, int r, int c) {
+  if (triangulated) {
+    std::vector<int32_t> first{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1)};
+    mesh.append_face(first);
+    std::vector<int32_t> second{corner(r, c), corner(r + 1, c + 1), corner(r + 1, c)};
+    mesh.append_face(second);
+  } else {
+    std::vector<int32_t> quad{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1),
+                              corner(r + 1, c)};
+    mesh.append_face(quad);
+  }
+}
+
 SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpec& defects,
                        const Head& head, Rng& rng, std::vector<float>& positions, PolyMesh& mesh,
                        std::vector<float>& uv, std::vector<float>& vertex_along_m) {
@@ -770,16 +787,7 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
   };
   for (int r = 0; r + 1 < rows; ++r)
     for (int c = 0; c + 1 < columns; ++c) {
-      if (patch.triangulated) {
-        std::vector<int32_t> first{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1)};
-        mesh.append_face(first);
-        std::vector<int32_t> second{corner(r, c), corner(r + 1, c + 1), corner(r + 1, c)};
-        mesh.append_face(second);
-      } else {
-        std::vector<int32_t> quad{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1),
-                                  corner(r + 1, c)};
-        mesh.append_face(quad);
-      }
+      append_cell(mesh, patch.triangulated, corner, r, c);
     }
   patch.face_count = mesh.face_count() - patch.first_face;
   return patch;
@@ -832,16 +840,7 @@ SynthPatch build_tube_patch(const Stream& stream, const Piece& piece, int sides,
   };
   for (int r = 0; r + 1 < rows; ++r)
     for (int c = 0; c < sides; ++c) {
-      if (patch.triangulated) {
-        std::vector<int32_t> first{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1)};
-        mesh.append_face(first);
-        std::vector<int32_t> second{corner(r, c), corner(r + 1, c + 1), corner(r + 1, c)};
-        mesh.append_face(second);
-      } else {
-        std::vector<int32_t> quad{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1),
-                                  corner(r + 1, c)};
-        mesh.append_face(quad);
-      }
+      append_cell(mesh, patch.triangulated, corner, r, c);
     }
   patch.face_count = mesh.face_count() - patch.first_face;
   return patch;
