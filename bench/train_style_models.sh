@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # bench/train_style_models.sh: trains the shipped hairstyle classifiers from scratch.
-# The synthetic corpus (hair-synth corpus --count 66, seeds 1 and 2: 132 models) and the
-# ten MakeHuman meshes go through Makefile.pipeline up to strands.h5, then
-# hair-train-style writes the feature tables, the cross-validation reports (folds of
+# The synthetic corpus (hair-synth corpus --painted --count 90, seeds 1 and 2: 180 models,
+# ten of each of the 18 presets) and the ten MakeHuman meshes go through Makefile.pipeline
+# up to strands.h5, then hair-train-style writes the feature tables, the leave-one-model-out
+# report on the real meshes (the headline), the cross-validation reports (folds of
 # clusters and folds of models) and models/style_{paper,extended}.yml (docs/classify.md).
 #
 #   bash bench/train_style_models.sh [WORK_DIR]
@@ -28,7 +29,8 @@ runs=()
 for seed in 1 2; do
   data=$work/synth$seed/data
   if [[ ! -d $data/hair ]]; then
-    build/bin/hair-synth corpus --count 66 --seed "$seed" --reproducible -o "$data/hair" >/dev/null
+    build/bin/hair-synth corpus --painted --count 90 --seed "$seed" --reproducible \
+      -o "$data/hair" >/dev/null
   fi
   runs+=(--runs "$work/synth$seed/out")
 done
@@ -54,6 +56,8 @@ start=$(date +%s)
 mkdir -p "$models" "$reports"
 build/bin/hair-train-style "${runs[@]}" --labels data/labels/makehuman_styles.tsv \
   --tables "$work/tables" --report "$reports/classify_cv.md" --models "$models"
+build/bin/hair-train-style --tables-in "$work/tables" \
+  --holdout-report "$reports/classify_real_holdout.md"
 build/bin/hair-train-style --tables-in "$work/tables" --fold-by model \
   --report "$reports/classify_cv_by_model.md"
 echo "train_style_models: training $(($(date +%s) - start)) s"

@@ -32,10 +32,36 @@ int main(int argc, char** argv) {
                        "TOML file of [[pin]] tables that pin clusters' styles, each by "
                        "cluster = ID or point_m = [x, y, z] and style = \"fixed\" "
                        "(docs/classify.md)");
-  std::string classifier = "random_forest";
+  std::string classifier = "svm";
   app.params().add("classifier", classifier,
-                   "whose class is the style: random_forest (the paper's better one) or svm",
+                   "whose class is the style: svm (the better on real meshes held out, "
+                   "docs/classify.md) or random_forest (the paper's better one)",
                    {"random_forest", "svm"});
+  hair::DecisiveStyleRules rules;
+  app.params().add("decisive_rules", rules.enabled,
+                   "let the paper's criteria decide where they are decisive: hair lying on the "
+                   "scalp to its ends is short, a cap gathered into a band is fixed "
+                   "(docs/classify.md)");
+  const auto share = hair::ParamRange::closed(0.0, 1.0);
+  const auto distance = hair::ParamRange::closed(0.0, 10.0);
+  app.params().add("short_far_scalp_distance_h", rules.short_far_scalp_distance_h,
+                   "short rule: the far particles (95th percentile) at most this far from the "
+                   "scalp, in H",
+                   distance);
+  app.params().add("short_tip_share", rules.short_tip_share,
+                   "short rule: at least this share of the strands end in the cluster", share);
+  app.params().add("short_gathering_ratio", rules.short_gathering_ratio,
+                   "short rule: the ends at least this spread (equation 6's ratio)", share);
+  app.params().add("fixed_root_share", rules.fixed_root_share,
+                   "fixed rule: at least this share of the strands start at roots", share);
+  app.params().add("fixed_gathering_ratio", rules.fixed_gathering_ratio,
+                   "fixed rule: the ends at most this spread (equation 6's ratio)", share);
+  app.params().add("fixed_far_scalp_distance_h", rules.fixed_far_scalp_distance_h,
+                   "fixed rule: the far particles at most this far from the scalp, in H", distance);
+  app.params().add("fixed_tip_share", rules.fixed_tip_share,
+                   "fixed rule: at most this share of the strands end in the cluster (the "
+                   "others go on past the band)",
+                   share);
   double unsure_below = hair::kDefaultUnsureBelow;
   app.params().add("unsure_below", unsure_below,
                    "a cluster whose classifier gives its style a smaller share of votes is "
@@ -52,22 +78,22 @@ int main(int argc, char** argv) {
                                                                // take the paper's or ours
     hair::StyleFeatures features = hair::style_features(input, feature_params);
     hair::ClusterStyles styles =
-        hair::cluster_styles(features, model, *hair::style_classifier_from_name(classifier));
+        hair::cluster_styles(features, model, *hair::style_classifier_from_name(classifier), rules);
     // The user's pins, read and resolved before anything is written (a bad file: one
     // line, exit 2, no output).
     if (!overrides_path.empty()) {
-      const std::vector<hair::ResolvedPin> pins = hair::resolve_style_pins(
-          hair::read_style_pins(overrides_path), styles.style, input.strands,
-          input.head_height_m, overrides_path);
+      const std::vector<hair::ResolvedPin> pins =
+          hair::resolve_style_pins(hair::read_style_pins(overrides_path), styles.style,
+                                   input.strands, input.head_height_m, overrides_path);
       for (const hair::ResolvedPin& pin : pins)
         spdlog::info("{}: cluster {} pinned {} (the classifier said {}, {:.2f} of its votes){}",
                      overrides_path, pin.cluster, hair::hair_style_name(pin.style),
                      hair::hair_style_name(static_cast<hair::HairStyle>(
                          styles.style[static_cast<size_t>(pin.cluster)])),
                      styles.confidence[static_cast<size_t>(pin.cluster)],
-                     pin.distance_m > 0
-                         ? fmt::format(", by a point {:.1f} mm from its strands", 1000 * pin.distance_m)
-                         : std::string());
+                     pin.distance_m > 0 ? fmt::format(", by a point {:.1f} mm from its strands",
+                                                      1000 * pin.distance_m)
+                                        : std::string());
       hair::apply_style_pins(pins, styles);
     }
     int classified = 0;
@@ -80,13 +106,22 @@ int main(int argc, char** argv) {
     }
     spdlog::info("{}: {} clusters, {} classified ({})", strands_path, styles.style.size(),
                  classified, summary);
+    std::string ruled_list;
+    for (size_t c = 0; c < styles.ruled.size(); ++c)
+      if (styles.ruled[c] && !styles.pinned[c])
+        ruled_list +=
+            fmt::format("{}{} {}", ruled_list.empty() ? "" : ", ", c,
+                        hair::hair_style_name(static_cast<hair::HairStyle>(styles.style[c])));
+    if (!ruled_list.empty())
+      spdlog::info("{}: decided by the paper's criteria: {}", strands_path, ruled_list);
     const std::vector<uint8_t> unsure = hair::unsure_clusters(styles, unsure_below);
     std::string unsure_list;
     for (size_t c = 0; c < unsure.size(); ++c)
       if (unsure[c])
-        unsure_list += fmt::format("{}{} {} ({:.2f})", unsure_list.empty() ? "" : ", ", c,
-                                   hair::hair_style_name(static_cast<hair::HairStyle>(styles.style[c])),
-                                   styles.confidence[c]);
+        unsure_list +=
+            fmt::format("{}{} {} ({:.2f})", unsure_list.empty() ? "" : ", ", c,
+                        hair::hair_style_name(static_cast<hair::HairStyle>(styles.style[c])),
+                        styles.confidence[c]);
     if (!unsure_list.empty())
       spdlog::info("{}: unsure (under {:.2f} of the votes; pin them with --overrides if wrong): {}",
                    strands_path, unsure_below, unsure_list);
@@ -99,13 +134,13 @@ int main(int argc, char** argv) {
     hair::write_styles_file(file, styles, features, model_path, model.feature_set,
                             input.head_height_m, unsure_below);
     std::vector<std::pair<std::string, std::filesystem::path>> inputs{{"extract", extract_path},
-                                                            {"clusters", clusters_path},
-                                                            {"strands", strands_path},
-                                                            {"model", model_path}};
+                                                                      {"clusters", clusters_path},
+                                                                      {"strands", strands_path},
+                                                                      {"model", model_path}};
     if (!overrides_path.empty()) inputs.emplace_back("overrides", overrides_path);
-    hair::write_provenance(file,
-                           hair::stage_provenance("classify", app.params().effective_json().dump(),
-                                                  inputs, app.elapsed_s(), app.reproducible()));
+    hair::write_provenance(
+        file, hair::stage_provenance("classify", app.params().effective_json().dump(), inputs,
+                                     app.elapsed_s(), app.reproducible()));
     hair::h5::require_valid_output(file, hair::kStylesSchema);
     file.close();
     output.commit();

@@ -9,18 +9,21 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "hair/grow/grow_io.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
+#include "hair/h5/enum_dataset.h"
 #include "hair/h5/file.h"
 #include "hair/style/hair_style.h"
-#include "hair/grow/grow_io.h"
 #include "hair/style/style_io.h"
+#include "hair/style/style_training.h"
 #include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
 #include "support/run_command.h"
@@ -80,11 +83,11 @@ std::multiset<std::string> styles_found(const fs::path& path) {
   std::vector<std::string> report = text_lines(inspect.out);
   EXPECT_FALSE(report.empty());
   if (!report.empty()) {
-    EXPECT_EQ(report.back(), "valid: hairstyle.styles v3");
+    EXPECT_EQ(report.back(), "valid: hairstyle.styles v4");
   }
   hair::h5::File file = hair::h5::File::open_read_only(path);
   EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "classify");
-  EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "classifier"), "random_forest");
+  EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "classifier"), "svm");
   std::vector<int8_t> style = hair::read_cluster_styles(file);
   std::vector<int64_t> strands = hair::h5::read_vector<int64_t>(file, "/clusters/strand_count");
   std::multiset<std::string> words;
@@ -154,24 +157,39 @@ TEST_F(ClassifyCli, DrawsTheStylesInThePapersColours) {
 TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
   hair::h5::File file = hair::h5::File::open_read_only(styles(sample("ponytail01")));
   const std::vector<int8_t> style = hair::read_cluster_styles(file);
+  const std::vector<int8_t> svm_style =
+      hair::h5::read_enum_dataset(file, "/clusters/svm_style", hair::style_members());
   const hair::StyleCertainty certainty = hair::read_style_certainty(file);
-  const auto votes = hair::h5::read_matrix<double, Eigen::Dynamic>(file, "/clusters/forest_vote_fraction");
-  const std::vector<int8_t> classes = hair::h5::read_enum_dataset(file, "/classes/style", hair::style_members());
+  const auto votes = hair::h5::read_matrix<int32_t, Eigen::Dynamic>(file, "/clusters/svm_votes");
+  const std::vector<int8_t> classes =
+      hair::h5::read_enum_dataset(file, "/classes/style", hair::style_members());
   EXPECT_DOUBLE_EQ(certainty.unsure_below, 0.6);
+  int ruled = 0;
   for (size_t c = 0; c < style.size(); ++c) {
     SCOPED_TRACE("cluster " + std::to_string(c));
     EXPECT_EQ(certainty.pinned[c], 0);
     if (style[c] < 0) {
       EXPECT_EQ(certainty.confidence[c], 0.0);
       EXPECT_EQ(certainty.unsure[c], 0);
+      EXPECT_EQ(certainty.ruled[c], 0);
       continue;
     }
-    // The random forest's share of votes for the style it gave, and unsure below 0.6.
+    if (certainty.ruled[c]) {  // the paper's criteria decided: sure
+      ++ruled;
+      EXPECT_EQ(certainty.confidence[c], 1.0);
+      EXPECT_EQ(certainty.unsure[c], 0);
+      continue;
+    }
+    // The SVM's one-vs-one wins of the style it gave over k - 1, and unsure below 0.6.
+    EXPECT_EQ(style[c], svm_style[c]);
     const auto k = std::find(classes.begin(), classes.end(), style[c]) - classes.begin();
-    EXPECT_DOUBLE_EQ(certainty.confidence[c], votes(static_cast<Eigen::Index>(c), k));
+    EXPECT_DOUBLE_EQ(certainty.confidence[c], votes(static_cast<Eigen::Index>(c), k) /
+                                                  static_cast<double>(classes.size() - 1));
     EXPECT_EQ(certainty.unsure[c], certainty.confidence[c] < 0.6 ? 1 : 0);
-    EXPECT_GE(certainty.confidence[c], 1.0 / static_cast<double>(classes.size()));
+    EXPECT_GT(certainty.confidence[c], 0.0);
   }
+  // ponytail01's cap, gathered into the band, is decided by the fixed rule.
+  EXPECT_GE(ruled, 1);
 }
 
 TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {
@@ -180,11 +198,15 @@ TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {
   const std::vector<int8_t> before = hair::read_cluster_styles(classified);
   // The cluster with most strands, pinned to a style other than its own; and a second
   // cluster by a point of its grown strands.
-  const std::vector<int64_t> strands = hair::h5::read_vector<int64_t>(classified, "/clusters/strand_count");
-  const auto biggest = static_cast<size_t>(std::max_element(strands.begin(), strands.end()) - strands.begin());
+  const std::vector<int64_t> strands =
+      hair::h5::read_vector<int64_t>(classified, "/clusters/strand_count");
+  const auto biggest =
+      static_cast<size_t>(std::max_element(strands.begin(), strands.end()) - strands.begin());
   const int8_t other = before[biggest] == 1 ? 0 : 1;  // fixed, or normal if it was fixed
-  const hair::GrownStrands grown = hair::read_grown_strands(hair::h5::File::open_read_only(ponytail.strands));
-  const auto& point_cluster = std::get<std::vector<int32_t>>(grown.strands.point_attributes.at("cluster"));
+  const hair::GrownStrands grown =
+      hair::read_grown_strands(hair::h5::File::open_read_only(ponytail.strands));
+  const auto& point_cluster =
+      std::get<std::vector<int32_t>>(grown.strands.point_attributes.at("cluster"));
   int64_t point = -1;
   for (int64_t p = 0; p < grown.strands.point_count(); ++p)
     if (point_cluster[static_cast<size_t>(p)] != static_cast<int32_t>(biggest) &&
@@ -194,7 +216,8 @@ TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {
     }
   ASSERT_GE(point, 0);
   const auto second = static_cast<size_t>(point_cluster[static_cast<size_t>(point)]);
-  const Eigen::Vector3f at = grown.strands.points.row(point).transpose() + Eigen::Vector3f(0.001f, 0, 0);
+  const Eigen::Vector3f at =
+      grown.strands.points.row(point).transpose() + Eigen::Vector3f(0.001f, 0, 0);
   const fs::path overrides = directory() / "pins.toml";
   hair::test::write_text_file(
       overrides, "# pins\n[[pin]]\ncluster = " + std::to_string(biggest) + "\nstyle = \"" +
@@ -208,11 +231,13 @@ TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {
   arguments.push_back("--reproducible");
   const auto run = run_command(kBin / "classify", arguments);
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.err.find("cluster " + std::to_string(biggest) + " pinned"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("cluster " + std::to_string(biggest) + " pinned"), std::string::npos)
+      << run.err;
   hair::h5::File file = hair::h5::File::open_read_only(path);
   const std::vector<int8_t> after = hair::read_cluster_styles(file);
   const hair::StyleCertainty certainty = hair::read_style_certainty(file);
-  const std::vector<int8_t> forest = hair::h5::read_enum_dataset(file, "/clusters/forest_style", hair::style_members());
+  const std::vector<int8_t> forest =
+      hair::h5::read_enum_dataset(file, "/clusters/forest_style", hair::style_members());
   for (size_t c = 0; c < after.size(); ++c) {
     SCOPED_TRACE("cluster " + std::to_string(c));
     if (c == biggest) {
@@ -234,9 +259,9 @@ TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {
   EXPECT_NE(provenance.find("pins.toml"), std::string::npos) << provenance;
   // The picture lists the pinned clusters.
   const fs::path png = directory() / "pinned.png";
-  auto drawn = run_command(kBin / "hair-render", {path.string(), "--strands", ponytail.strands.string(),
-                                                   "--extract", ponytail.extract.string(), "--size", "128",
-                                                   "-o", png.string()});
+  auto drawn = run_command(kBin / "hair-render",
+                           {path.string(), "--strands", ponytail.strands.string(), "--extract",
+                            ponytail.extract.string(), "--size", "128", "-o", png.string()});
   EXPECT_EQ(drawn.exit_code, 0) << drawn.err;
 }
 
@@ -251,24 +276,30 @@ TEST_F(ClassifyCli, ThePipelineTakesAModelsPinsWhenItHasSomeAndRerunsOnlyClassif
   fs::create_directories(out);
   fs::copy_file(kSamples / "hair" / "braid01.obj", data / "hair" / "braid01.obj");
   fs::copy_file(kSamples / "body.obj", data / "body.obj");
-  const fs::path made[] = {braid.extract, braid.types, braid.middle, braid.clusters, braid.strands,
-                           styles(braid)};
+  const fs::path made[] = {braid.extract,  braid.types,   braid.middle,
+                           braid.clusters, braid.strands, styles(braid)};
   auto when = fs::file_time_type::clock::now() + std::chrono::seconds(10);
   for (const fs::path& file : made) {
     fs::copy_file(file, out / file.filename());
     fs::last_write_time(out / file.filename(), when += std::chrono::seconds(1));
   }
   const std::vector<std::string> make = {
-      "-n", "-f", (fs::path(HAIR_SOURCE_DIR) / "Makefile.pipeline").string(),
-      "DATA=" + data.string(), "OUT=" + (root / "out").string(), "BIN=" + kBin.string(),
+      "-n",
+      "-f",
+      (fs::path(HAIR_SOURCE_DIR) / "Makefile.pipeline").string(),
+      "DATA=" + data.string(),
+      "OUT=" + (root / "out").string(),
+      "BIN=" + kBin.string(),
       "PARAMS=" + (fs::path(HAIR_SOURCE_DIR) / "pipelines" / "default").string(),
-      "STYLE_MODEL=" + kModel.string(), (out / "styles.h5").string()};
+      "STYLE_MODEL=" + kModel.string(),
+      (out / "styles.h5").string()};
   auto before = run_command("/usr/bin/make", make, HAIR_SOURCE_DIR);
   ASSERT_EQ(before.exit_code, 0) << before.err;
   EXPECT_NE(before.out.find("is up to date"), std::string::npos) << before.out;
   EXPECT_EQ(before.out.find("--model"), std::string::npos) << before.out;
   fs::create_directories(data / "overrides");
-  hair::test::write_text_file(data / "overrides" / "braid01.toml", "[[pin]]\ncluster = 0\nstyle = \"fixed\"\n");
+  hair::test::write_text_file(data / "overrides" / "braid01.toml",
+                              "[[pin]]\ncluster = 0\nstyle = \"fixed\"\n");
   fs::last_write_time(data / "overrides" / "braid01.toml", when += std::chrono::seconds(1));
   auto after = run_command("/usr/bin/make", make, HAIR_SOURCE_DIR);
   ASSERT_EQ(after.exit_code, 0) << after.err;
@@ -291,6 +322,84 @@ fs::path edited_model(const fs::path& copy, const std::string& from, const std::
   if (at != std::string::npos) content.replace(at, from.size(), to);
   hair::test::write_text_file(copy, content);
   return copy;
+}
+
+/// Per true style (HairStyle value), the strands of a synthetic model's clusters of that
+/// style (their majority, as hair-train-style labels them) and those classified so.
+struct StrandsByTruth {
+  std::map<int, int64_t> strands, right;
+  double share_right(int style) const {
+    auto found = strands.find(style);
+    return found == strands.end() || found->second == 0
+               ? -1
+               : static_cast<double>(right.at(style)) / static_cast<double>(found->second);
+  }
+};
+
+StrandsByTruth strands_by_truth(const SampleOutputs& out, const fs::path& truth_path,
+                                const fs::path& styles_path) {
+  hair::h5::File extract = hair::h5::File::open_read_only(out.extract);
+  hair::h5::File truth = hair::h5::File::open_read_only(truth_path);
+  hair::StyleFeatureInput input =
+      hair::read_style_feature_input(extract, hair::h5::File::open_read_only(out.clusters),
+                                     hair::h5::File::open_read_only(out.strands));
+  auto group_count = static_cast<int32_t>(input.group_cluster.size());
+  std::vector<int8_t> group_style = hair::group_styles_from_truth(
+      hair::h5::read_vector<int64_t>(extract, "/mesh/face_offsets"),
+      hair::h5::read_vector<int32_t>(extract, "/mesh/face_vertices"),
+      hair::h5::read_vector<int32_t>(extract, "/mesh/face_group"), group_count,
+      hair::h5::read_vector<int64_t>(truth, "/patches/first_vertex"),
+      hair::h5::read_enum_values(truth, "/patches/style"));
+  std::vector<int32_t> faces = hair::h5::read_vector<int32_t>(extract, "/groups/face_count");
+  std::vector<int8_t> label = hair::cluster_styles_by_majority(
+      input.group_cluster, group_style, std::vector<double>(faces.begin(), faces.end()),
+      input.cluster_count);
+  hair::h5::File styles = hair::h5::File::open_read_only(styles_path);
+  std::vector<int8_t> style = hair::read_cluster_styles(styles);
+  std::vector<int64_t> strands = hair::h5::read_vector<int64_t>(styles, "/clusters/strand_count");
+  StrandsByTruth result;
+  for (size_t c = 0; c < style.size(); ++c) {
+    if (label[c] < 0 || strands[c] == 0) continue;
+    result.strands[label[c]] += strands[c];
+    result.right[label[c]] += style[c] == label[c] ? strands[c] : 0;
+  }
+  return result;
+}
+
+TEST_F(ClassifyCli, ThePaintedPresetsGetTheStylesTheirTruthSays) {
+  // The kinds of community meshes (hair-synth's painted presets) with a seed the shipped
+  // model was not trained on (the corpus's are 1000-1089 and 2000-2089): a bun and the
+  // cap under a band are fixed, the low tail and the ringlet tubes normal, the mohawk's
+  // spikes short (the issue's check), each on at least 80% of its strands.
+  const fs::path data = directory() / "painted";
+  fs::create_directories(data);
+  struct Expectation {
+    std::string preset;
+    std::vector<hair::HairStyle> styles;
+  };
+  const std::vector<Expectation> expectations = {
+      {"bun", {hair::HairStyle::fixed}},
+      {"low_tail", {hair::HairStyle::fixed, hair::HairStyle::normal}},
+      {"ringlets", {hair::HairStyle::normal}},
+      {"mohawk", {hair::HairStyle::short_hair}}};
+  for (const Expectation& expectation : expectations) {
+    auto synth =
+        run_command(kBin / "hair-synth",
+                    {"--preset", expectation.preset, "--vary", "--seed", "7101", "-o",
+                     data.string(), "--body", (kSamples / "body.obj").string(), "--reproducible"});
+    ASSERT_EQ(synth.exit_code, 0) << synth.err;
+    SampleOutputs out = hair::test::run_sample_pipeline(
+        directory() / expectation.preset, data / (expectation.preset + ".obj"), 10000);
+    fs::path path = styles(out);
+    StrandsByTruth found = strands_by_truth(out, data / (expectation.preset + ".truth.h5"), path);
+    for (hair::HairStyle style : expectation.styles) {
+      double share = found.share_right(static_cast<int>(style));
+      std::printf("[ painted  ] %s: %s clusters %.1f%% right (%lld strands)\n",
+                  expectation.preset.c_str(), hair::hair_style_name(style), 100 * share,
+                  static_cast<long long>(found.strands[static_cast<int>(style)]));
+      EXPECT_GE(share, 0.8) << expectation.preset << ": " << hair::hair_style_name(style);
+    }
+  }
 }
 
 TEST_F(ClassifyCli, WrongInputsFailCleanly) {
@@ -321,15 +430,35 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
       {{extract, clusters, strands, "--model", other_format}, "format"},
       {{extract, clusters, strands, "--model", model, "--classifier", "knn"}, "classifier"},
       {{extract, clusters, strands}, "--model"},
-      {{extract, clusters, strands, "--model", model, "--overrides", (directory / "no.toml").string()}, "no.toml"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("unknown_cluster", "[[pin]]\ncluster = 999\nstyle = \"fixed\"\n")}, "no cluster 999"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("unknown_style", "[[pin]]\ncluster = 0\nstyle = \"curly\"\n")}, "style must be one of"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("malformed", "[[pin]\ncluster = 0\n")}, "not TOML"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("both", "[[pin]]\ncluster = 0\npoint_m = [0, 1.6, 0]\nstyle = \"fixed\"\n")}, "either cluster or point_m"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("far_point", "[[pin]]\npoint_m = [5, 5, 5]\nstyle = \"fixed\"\n")}, "no grown strand within"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("unknown_key", "[[pin]]\ncluster = 0\nstyle = \"fixed\"\ncolour = \"red\"\n")}, "unknown key 'colour'"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("top_key", "style = \"fixed\"\n")}, "unknown key 'style'"},
-      {{extract, clusters, strands, "--model", model, "--overrides", pins("disagree", "[[pin]]\ncluster = 1\nstyle = \"fixed\"\n[[pin]]\ncluster = 1\nstyle = \"normal\"\n")}, "pinned already"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        (directory / "no.toml").string()},
+       "no.toml"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins("unknown_cluster", "[[pin]]\ncluster = 999\nstyle = \"fixed\"\n")},
+       "no cluster 999"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins("unknown_style", "[[pin]]\ncluster = 0\nstyle = \"curly\"\n")},
+       "style must be one of"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins("malformed", "[[pin]\ncluster = 0\n")},
+       "not TOML"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins("both", "[[pin]]\ncluster = 0\npoint_m = [0, 1.6, 0]\nstyle = \"fixed\"\n")},
+       "either cluster or point_m"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins("far_point", "[[pin]]\npoint_m = [5, 5, 5]\nstyle = \"fixed\"\n")},
+       "no grown strand within"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins("unknown_key", "[[pin]]\ncluster = 0\nstyle = \"fixed\"\ncolour = \"red\"\n")},
+       "unknown key 'colour'"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins("top_key", "style = \"fixed\"\n")},
+       "unknown key 'style'"},
+      {{extract, clusters, strands, "--model", model, "--overrides",
+        pins(
+            "disagree",
+            "[[pin]]\ncluster = 1\nstyle = \"fixed\"\n[[pin]]\ncluster = 1\nstyle = \"normal\"\n")},
+       "pinned already"},
   };
   hair::test::expect_clean_failures(kBin / "classify", "classify", cases, directory / "failures",
                                     braid.clusters);

@@ -80,13 +80,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 /// The models of corpus_plan() and DIR/manifest.tsv: one line per model with its
 /// streams per style.
-void write_corpus(int count, uint32_t base_seed, const fs::path& directory, const Common& common) {
+void write_corpus(int count, uint32_t base_seed, bool with_painted, const fs::path& directory,
+                  const Common& common) {
   hair::PolyMesh body = body_in_metres(common);
   std::string manifest =
       "name\tpreset\tseed\tmixed\tpatches\tvertices\tstreams\tnormal\tfixed\tshort\tbraided\n";
   std::array<int, 4> totals{};
   int mixed_models = 0;
-  for (const hair::synth::CorpusEntry& entry : hair::synth::corpus_plan(count, base_seed)) {
+  for (const hair::synth::CorpusEntry& entry :
+       hair::synth::corpus_plan(count, base_seed, with_painted)) {
     auto start = std::chrono::steady_clock::now();
     SynthModel model =
         hair::synth::generate_model(entry.spec, body, entry.seed, common.strands_per_stream);
@@ -179,6 +181,10 @@ int main(int argc, char** argv) {
   corpus->add_option("--seed", corpus_seed, "base seed: model i gets seed*1000+i")
       ->capture_default_str();
   corpus->add_option("-o,--output", corpus_output, "output folder")->required();
+  bool corpus_painted = false;
+  corpus->add_flag("--painted", corpus_painted,
+                   "cycle through the painted presets too (the kinds of community meshes, with "
+                   "their textures): the corpus the style classifiers train on");
   add_common(*corpus, common);
 
   CLI::App* gallery = app.add_subcommand("gallery", "render the presets into one PNG");
@@ -199,12 +205,12 @@ int main(int argc, char** argv) {
     if (list_presets) {
       for (const std::string& p : hair::synth::preset_names()) std::cout << p << "\n";
       for (const std::string& p : hair::synth::painted_preset_names())
-        std::cout << p << " (painted; not in the corpus)\n";
+        std::cout << p << " (painted; in the corpus with corpus --painted)\n";
       return 0;
     }
     if (*corpus) {
       fs::create_directories(corpus_output);
-      write_corpus(count, corpus_seed, corpus_output, common);
+      write_corpus(count, corpus_seed, corpus_painted, corpus_output, common);
       return 0;
     }
     if (*gallery) {

@@ -7,7 +7,7 @@
 namespace hair {
 
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
-                             StyleClassifierKind classifier) {
+                             StyleClassifierKind classifier, const DecisiveStyleRules& rules) {
   const Eigen::MatrixXd& rows = feature_set_rows(features, model.feature_set);
   if (model.feature_names != feature_set_names(model.feature_set))
     throw Error::usage("the style model's '" + model.feature_set +
@@ -26,6 +26,7 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
   result.forest_vote_fraction = Eigen::MatrixXd::Zero(cluster_count, class_count);
   result.confidence.assign(static_cast<size_t>(cluster_count), 0.0);
   result.pinned.assign(static_cast<size_t>(cluster_count), 0);
+  result.ruled.assign(static_cast<size_t>(cluster_count), 0);
   for (Eigen::Index c = 0; c < cluster_count; ++c) {
     if (features.strand_count[static_cast<size_t>(c)] == 0) continue;
     Eigen::RowVectorXd row = rows.row(c);
@@ -46,10 +47,16 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
         std::find(model.class_labels.begin(), model.class_labels.end(), result.style[i]) -
         model.class_labels.begin());
     if (chosen < class_count)
-      result.confidence[i] =
-          classifier == StyleClassifierKind::svm
-              ? (class_count > 1 ? result.svm_votes(c, chosen) / static_cast<double>(class_count - 1) : 1.0)
-              : result.forest_vote_fraction(c, chosen);
+      result.confidence[i] = classifier == StyleClassifierKind::svm
+                                 ? (class_count > 1 ? result.svm_votes(c, chosen) /
+                                                          static_cast<double>(class_count - 1)
+                                                    : 1.0)
+                                 : result.forest_vote_fraction(c, chosen);
+    if (std::optional<HairStyle> decided = decisive_style(features.paper[i], rules)) {
+      result.style[i] = static_cast<int8_t>(*decided);
+      result.confidence[i] = 1.0;
+      result.ruled[i] = 1;
+    }
   }
   return result;
 }

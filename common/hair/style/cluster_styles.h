@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "hair/style/decisive_style_rules.h"
 #include "hair/style/style_classifier.h"
 #include "hair/style/style_features.h"
 
@@ -28,6 +29,10 @@ struct ClusterStyles {
   std::vector<double> confidence;
   /// Per cluster, 1 where a user pinned its style (classify --overrides).
   std::vector<uint8_t> pinned;
+  /// Per cluster, 1 where the paper's criteria decided its style (decisive_style_rules.h);
+  /// its confidence is then 1, and svm_style and forest_style still say what the
+  /// classifiers would have given.
+  std::vector<uint8_t> ruled;
 };
 
 /// Below this confidence a cluster's style is called unsure (styles.h5 /clusters/unsure,
@@ -38,8 +43,8 @@ inline constexpr double kDefaultUnsureBelow = 0.6;
 /// Classifies every cluster that grown strands run through by its features of the
 /// model's feature set (feature_set_rows(); their names must be the model's); a cluster
 /// without strands gets no style (-1). `classifier` picks which classifier's class is
-/// `style`.
+/// `style`; where `rules` decide (decisive_style()), they give the style instead.
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
-                             StyleClassifierKind classifier);
+                             StyleClassifierKind classifier, const DecisiveStyleRules& rules);
 
 }  // namespace hair

@@ -21,7 +21,7 @@ struct FeatureStandardization {
 };
 
 /// Throws hair::Error (bad input) for the first NaN or infinite value of `rows` (n x d),
-/// naming its row and feature: "feature row 12, column 3 (max_length_h): NaN".
+/// naming its row and feature: "feature row 12, column 3 (long_length_h): NaN".
 /// `feature_names`: d names, or empty (the column number alone).
 void check_finite_features(const Eigen::MatrixXd& rows,
                            std::span<const std::string> feature_names = {});

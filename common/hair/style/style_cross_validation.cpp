@@ -4,10 +4,8 @@
 #include <string>
 
 #include "hair/core/error.h"
-#include "hair/style/feature_standardization.h"
-#include "hair/style/puk_svm.h"
-#include "hair/style/random_forest.h"
 #include "hair/style/stratified_folds.h"
+#include "hair/style/style_held_out_prediction.h"
 
 namespace hair {
 
@@ -49,30 +47,14 @@ StyleCrossValidation style_cross_validation(const Eigen::MatrixXd& features,
   for (int32_t fold = 0; fold < params.folds; ++fold) {
     std::vector<Eigen::Index> train = fold_row_indices(result.fold, fold, false);
     std::vector<Eigen::Index> test = fold_row_indices(result.fold, fold, true);
-    Eigen::MatrixXd train_features = features(train, Eigen::all);
-    std::vector<int32_t> train_labels;
-    for (Eigen::Index row : train) train_labels.push_back(labels[static_cast<size_t>(row)]);
-
-    FeatureStandardization standardization = feature_standardization(train_features);
-    FloatRows train_rows = standardized_rows(standardization, train_features);
-    FloatRows test_rows = standardized_rows(standardization, features(test, Eigen::all));
-
-    PukSvmSelection choice = selected_puk_svm_params(train_rows, train_labels, params.svm_grid,
-                                                     params.inner_folds, params.seed + 1 + fold);
-    PukSvm svm = trained_puk_svm(train_rows, train_labels, choice.params);
-    cv::Ptr<cv::ml::RTrees> forest = trained_random_forest(train_rows, train_labels, params.forest);
-    std::vector<int32_t> forest_classes = train_labels;
-    std::sort(forest_classes.begin(), forest_classes.end());
-    forest_classes.erase(std::unique(forest_classes.begin(), forest_classes.end()),
-                         forest_classes.end());
+    HeldOutPrediction prediction =
+        held_out_prediction(features, labels, train, test, params, params.seed + 1 + fold);
     for (size_t i = 0; i < test.size(); ++i) {
-      const float* row = test_rows.row(static_cast<Eigen::Index>(i)).data();
       auto target = static_cast<size_t>(test[i]);
-      result.svm_predicted[target] = svm_prediction(svm, row).label;
-      result.forest_predicted[target] =
-          forest_prediction(*forest, forest_classes, row, static_cast<int>(features.cols())).label;
+      result.svm_predicted[target] = prediction.svm[i];
+      result.forest_predicted[target] = prediction.forest[i];
     }
-    result.svm_choice.push_back(choice);
+    result.svm_choice.push_back(prediction.svm_choice);
     result.fold_rows.push_back(static_cast<int>(test.size()));
   }
   result.svm = classification_scores(labels, result.svm_predicted, result.class_labels, subset);

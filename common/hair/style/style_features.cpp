@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numeric>
 
 #include "hair/core/error.h"
 #include "hair/geom/strand_geometry.h"
@@ -242,19 +243,30 @@ std::array<double, 4> downward_profile(const StrandSet& profiles, int points_per
   return downward;
 }
 
+/// The q-quantile of `values` (not empty; reordered): the value at rank ceil(q n) - 1,
+/// so 1 gives the maximum.
+double quantile_of(std::vector<double>& values, double q) {
+  auto n = values.size();
+  auto rank = static_cast<size_t>(std::max(1.0, std::ceil(q * static_cast<double>(n)))) - 1;
+  rank = std::min(rank, n - 1);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank),
+                   values.end());
+  return values[rank];
+}
+
 }  // namespace
 
 const std::vector<std::string>& paper_feature_names() {
   static const std::vector<std::string> names = {
-      "mean_length_h", "max_length_h",      "gathering_ratio", "max_scalp_distance_h",
+      "mean_length_h", "long_length_h",     "gathering_ratio", "far_scalp_distance_h",
       "root_share",    "middle_node_count", "twist_h"};
   return names;
 }
 
 Eigen::RowVectorXd paper_feature_row(const PaperFeatures& features) {
   Eigen::RowVectorXd row(7);
-  row << features.mean_length_h, features.max_length_h, features.gathering_ratio,
-      features.max_scalp_distance_h, features.root_share,
+  row << features.mean_length_h, features.long_length_h, features.gathering_ratio,
+      features.far_scalp_distance_h, features.root_share,
       static_cast<double>(features.middle_node_count), features.twist_h;
   return row;
 }
@@ -383,6 +395,8 @@ std::vector<ClusterRuns> cluster_runs(const StyleFeatureInput& input) {
 StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureParams& params) {
   if (params.profile_points < 2 || params.raw_points < 3)
     throw Error::usage("profile_points must be >= 2 and raw_points >= 3");
+  if (!(params.robust_max_quantile > 0 && params.robust_max_quantile <= 1))
+    throw Error::usage("robust_max_quantile must be in (0, 1]");
   if (!(input.head_height_m > 0))
     throw Error::bad_input(input.source, "head height is not positive");
   const double h = input.head_height_m;
@@ -433,14 +447,12 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
       result.extended_rows.row(static_cast<Eigen::Index>(c)) = extended_feature_row(paper);
       continue;
     }
-    double length_sum_m = 0, length_max_m = 0;
-    for (int64_t s = 0; s < runs.strand_count(); ++s) {
-      double length_m = strand_length_m(runs, s);
-      length_sum_m += length_m;
-      length_max_m = std::max(length_max_m, length_m);
-    }
-    paper.mean_length_h = length_sum_m / static_cast<double>(runs.strand_count()) / h;
-    paper.max_length_h = length_max_m / h;
+    std::vector<double> length_m(static_cast<size_t>(runs.strand_count()));
+    for (int64_t s = 0; s < runs.strand_count(); ++s)
+      length_m[static_cast<size_t>(s)] = strand_length_m(runs, s);
+    paper.mean_length_h = std::accumulate(length_m.begin(), length_m.end(), 0.0) /
+                          static_cast<double>(length_m.size()) / h;
+    paper.long_length_h = quantile_of(length_m, params.robust_max_quantile) / h;
     double roots = 0;
     for (uint8_t at_root : cluster.starts_at_root) roots += at_root;
     double tips = 0;
@@ -459,8 +471,7 @@ StyleFeatures style_features(const StyleFeatureInput& input, const StyleFeatureP
 #pragma omp parallel for schedule(dynamic, 256)
     for (int64_t row = 0; row < profiles.point_count(); ++row)
       scalp_distance_m[static_cast<size_t>(row)] = scalp.distance(point_of(profiles.points, row));
-    paper.max_scalp_distance_h =
-        *std::max_element(scalp_distance_m.begin(), scalp_distance_m.end()) / h;
+    paper.far_scalp_distance_h = quantile_of(scalp_distance_m, params.robust_max_quantile) / h;
     paper.skin_distance_h = skin_distance_profile_h(sample.runs, skin, h);
     paper.downward = downward_profile(profiles, params.profile_points);
     result.paper_rows.row(static_cast<Eigen::Index>(c)) = paper_feature_row(paper);

@@ -33,6 +33,10 @@ struct StyleFeatureInput {
 struct StyleFeatureParams {
   /// Points per strand for the gathering ratio (equation 6).
   int profile_points = 20;
+  /// The paper's two maxima (the longest strand, the farthest particle from the scalp)
+  /// are taken as this quantile: on an artist's mesh a few strands grown astray (2-6 H
+  /// on a short cut or a cap) would otherwise decide them (docs/classify.md).
+  double robust_max_quantile = 0.95;
   /// Spacing of the points of the centre strand of all middle nodes, c^total, for the
   /// twist (equation 7), in H.
   double twist_step_h = 0.02;
@@ -53,11 +57,14 @@ struct StyleFeatureParams {
 /// The paper's features of one cluster (section 5.1). Lengths are in head heights H.
 struct PaperFeatures {
   double mean_length_h = 0;  ///< short: the average length of the cluster's strands
-  double max_length_h = 0;   ///< short: their maximum length
+  /// short: their maximum length, robust: the robust_max_quantile of the lengths
+  double long_length_h = 0;
   /// fixed: equation (6), d_M / max_j d_j with d_j the mean distance of the strands'
   /// j-th points to the centre strand's; small when the strands gather at the end.
   double gathering_ratio = 1;
-  double max_scalp_distance_h = 0;  ///< fixed: the farthest particle's distance to the scalp
+  /// fixed: the farthest particle's distance to the scalp, robust: the
+  /// robust_max_quantile of the (sampled strands') particles' distances
+  double far_scalp_distance_h = 0;
   double root_share = 0;            ///< fixed: share of the cluster's strands that start at a root
   int middle_node_count = 0;        ///< braided: middle clusters (cluster-middle) in the cluster
   /// braided: equation (7), max_ij |c_j^i - c_j^total| over the centre strands c^i of

@@ -59,6 +59,7 @@ std::vector<uint8_t> unsure_clusters(const ClusterStyles& styles, double unsure_
   std::vector<uint8_t> unsure(styles.style.size(), 0);
   for (size_t c = 0; c < unsure.size(); ++c)
     unsure[c] = styles.style[c] >= 0 && (c >= styles.pinned.size() || !styles.pinned[c]) &&
+                        (c >= styles.ruled.size() || !styles.ruled[c]) &&
                         c < styles.confidence.size() && styles.confidence[c] < unsure_below
                     ? 1
                     : 0;
@@ -88,6 +89,9 @@ void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleF
   h5::write_vector(file, "/clusters/confidence", confidence);
   h5::write_vector(file, "/clusters/unsure", unsure_clusters(styles, unsure_below));
   h5::write_vector(file, "/clusters/pinned", pinned);
+  std::vector<uint8_t> ruled = styles.ruled;
+  ruled.resize(styles.style.size(), 0);
+  h5::write_vector(file, "/clusters/ruled", ruled);
   h5::write_vector(file, "/clusters/strand_count", features.strand_count);
   h5::write_vector(file, "/clusters/point_count", features.point_count);
   h5::write_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values",
@@ -119,6 +123,7 @@ StyleCertainty read_style_certainty(const h5::File& file) {
   certainty.confidence = h5::read_vector<double>(file, "/clusters/confidence");
   certainty.unsure = h5::read_vector<uint8_t>(file, "/clusters/unsure");
   certainty.pinned = h5::read_vector<uint8_t>(file, "/clusters/pinned");
+  certainty.ruled = h5::read_vector<uint8_t>(file, "/clusters/ruled");
   certainty.unsure_below = h5::read_double_attribute(file, "/", "unsure_below");
   return certainty;
 }

@@ -38,7 +38,7 @@ std::vector<uint8_t> unsure_clusters(const ClusterStyles& styles, double unsure_
 /// How sure styles.h5 is of every cluster (schema version 3).
 struct StyleCertainty {
   std::vector<double> confidence;
-  std::vector<uint8_t> unsure, pinned;
+  std::vector<uint8_t> unsure, pinned, ruled;
   double unsure_below = 0;
 };
 StyleCertainty read_style_certainty(const h5::File& file);

@@ -39,8 +39,8 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
 }  // namespace
 
 void StyleTable::append(const Eigen::RowVectorXd& features, int8_t style,
-                        const std::string& model_name, int32_t cluster_id, bool real,
-                        double purity) {
+                        const std::string& model_name, int32_t cluster_id, bool real, double purity,
+                        int64_t strands) {
   if (features.size() != static_cast<Eigen::Index>(feature_names.size()))
     throw Error::usage("style table: a row of " + std::to_string(features.size()) +
                        " features for " + std::to_string(feature_names.size()) + " names");
@@ -51,17 +51,19 @@ void StyleTable::append(const Eigen::RowVectorXd& features, int8_t style,
   cluster.push_back(cluster_id);
   real_mesh.push_back(real ? 1 : 0);
   label_purity.push_back(purity);
+  strand_count.push_back(strands);
 }
 
 void write_style_table_tsv(const std::filesystem::path& path, const StyleTable& table) {
   std::ostringstream text;
-  text << "model\tcluster\treal_mesh\tlabel\tlabel_purity";
+  text << "model\tcluster\treal_mesh\tlabel\tlabel_purity\tstrands";
   for (const std::string& name : table.feature_names) text << '\t' << name;
   text << '\n';
   for (int64_t r = 0; r < table.row_count(); ++r) {
     auto i = static_cast<size_t>(r);
     text << table.model[i] << '\t' << table.cluster[i] << '\t' << int(table.real_mesh[i]) << '\t'
-         << kStyleWords[table.label[i]] << '\t' << number_text(table.label_purity[i]);
+         << kStyleWords[table.label[i]] << '\t' << number_text(table.label_purity[i]) << '\t'
+         << table.strand_count[i];
     for (Eigen::Index f = 0; f < table.rows.cols(); ++f)
       text << '\t' << number_text(table.rows(r, f));
     text << '\n';
@@ -84,7 +86,11 @@ StyleTable read_style_table_tsv(const std::filesystem::path& path) {
   if (header.size() < 6 || header[0] != "model" || header[3] != "label")
     throw Error::bad_input(path.string(), "line 1: not a style feature table header");
   StyleTable table;
-  table.feature_names.assign(header.begin() + 5, header.end());
+  const size_t first_feature = header[5] == "strands" ? 6 : 5;
+  if (header.size() <= first_feature)
+    throw Error::bad_input(path.string(), "line 1: a style feature table header without features");
+  table.feature_names.assign(header.begin() + static_cast<std::ptrdiff_t>(first_feature),
+                             header.end());
   std::vector<Eigen::RowVectorXd> rows;
   for (int line_number = 2; std::getline(stream, line); ++line_number) {
     if (line.empty()) continue;
@@ -100,13 +106,14 @@ StyleTable read_style_table_tsv(const std::filesystem::path& path) {
     Eigen::RowVectorXd values(static_cast<Eigen::Index>(table.feature_names.size()));
     try {
       for (Eigen::Index f = 0; f < values.size(); ++f) {
-        values(f) = std::stod(fields[static_cast<size_t>(f) + 5]);
+        values(f) = std::stod(fields[static_cast<size_t>(f) + first_feature]);
         if (!std::isfinite(values(f))) throw std::invalid_argument("not finite");
       }
       table.model.push_back(fields[0]);
       table.cluster.push_back(std::stoi(fields[1]));
       table.real_mesh.push_back(fields[2] == "1" ? 1 : 0);
       table.label_purity.push_back(std::stod(fields[4]));
+      table.strand_count.push_back(first_feature == 6 ? std::stoll(fields[5]) : 0);
     } catch (const std::exception&) {
       throw Error::bad_input(path.string(), where + "a value is not a finite number");
     }

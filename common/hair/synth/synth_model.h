@@ -124,8 +124,8 @@ struct HairStyleSpec {
 /// Names of the presets, in gallery order (the training corpus cycles through these).
 const std::vector<std::string>& preset_names();
 
-/// Presets of real meshes' kinds with painted textures (the real-meshes issue), not yet in
-/// the training corpus: "ring_cap" (a one-piece wig cap meshed in rings around the whorl,
+/// Presets of real meshes' kinds with painted textures (the real-meshes issue), in the
+/// training corpus with `corpus --painted`: "ring_cap" (a one-piece wig cap meshed in rings around the whorl,
 /// painted down from it), "cap_over_layer" (such a cap over a longer back layer of
 /// strips), "mohawk" (spike cards along the middle of the head), "low_tail" (hair pulled
 /// back under a band low at the nape into a tail), "face_locks" (medium hair with two
@@ -149,8 +149,10 @@ struct CorpusEntry {
 };
 
 /// The models of a corpus of `count`: model i is preset i mod #presets with seed
-/// base_seed * 1000 + i, its knobs varied by that seed (varied_spec).
-std::vector<CorpusEntry> corpus_plan(int count, uint32_t base_seed);
+/// base_seed * 1000 + i, its knobs varied by that seed (varied_spec). The presets are
+/// preset_names(), followed by painted_preset_names() when `with_painted` (the kinds of
+/// community meshes, with their painted textures: what the style classifiers train on).
+std::vector<CorpusEntry> corpus_plan(int count, uint32_t base_seed, bool with_painted = false);
 
 /// One patch of the mesh and its truth.
 struct SynthPatch {

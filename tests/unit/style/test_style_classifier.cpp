@@ -184,7 +184,7 @@ TEST_F(StyleModelTest, TrainedOnAllRows) {
     StylePrediction prediction = style_prediction(model_, {values.data(), 3});
     svm_correct += prediction.svm_label == data_.labels[static_cast<size_t>(row)];
     forest_correct += prediction.forest_label == data_.labels[static_cast<size_t>(row)];
-    EXPECT_EQ(prediction.label, prediction.forest_label);  // the default classifier
+    EXPECT_EQ(prediction.label, prediction.svm_label);  // the default classifier
     EXPECT_EQ(prediction.svm_decision_values.size(), 6u);
     EXPECT_EQ(prediction.forest_vote_fraction.size(), 4u);
   }
@@ -219,7 +219,7 @@ TEST_F(StyleModelTest, FileRoundTripPredictsTheSame) {
   std::string text = style_model_text(model_);
   EXPECT_TRUE(contains(text, "format: \"hairstyle.style_model\""));
   EXPECT_TRUE(contains(text, "version: 1"));
-  EXPECT_TRUE(contains(text, "default_classifier: random_forest"));
+  EXPECT_TRUE(contains(text, "default_classifier: svm"));
 }
 
 TEST_F(StyleModelTest, WrongVersionIsRejected) {
@@ -254,7 +254,7 @@ TEST_F(StyleModelTest, MissingOrBrokenEntriesAreNamed) {
       contains(read_error(edited_text("   sigma:", "   sigmo:")), "model.yml:/svm/sigma: missing"));
   EXPECT_TRUE(contains(read_error(edited_text("random_forest:\n", "random_wood:\n")),
                        "model.yml:/random_forest: missing"));
-  EXPECT_TRUE(contains(read_error(edited_text("default_classifier: random_forest",
+  EXPECT_TRUE(contains(read_error(edited_text("default_classifier: svm",
                                               "default_classifier: perceptron")),
                        "/default_classifier: is 'perceptron'"));
   EXPECT_THROW(read_style_model(directory_ / "absent.yml", kNames), Error);

@@ -80,18 +80,39 @@ TEST(ClusterRuns, SplitsStrandsWhereTheirClusterChanges) {
   EXPECT_EQ(runs[2].runs.strand_count(), 0);
 }
 
+TEST(StyleFeatures, AFewStrandsGrownAstrayDoNotDecideTheLongestLength) {
+  // 39 short strands of 0.05 m and one stray of 1 m (4 H): the paper's maximum would be
+  // 4 H; its robust form, the 95th percentile, stays with the short hair.
+  StyleFeatureInput input = flat_scalp_input();
+  input.cluster_count = 1;
+  for (int i = 0; i < 40; ++i)
+    add_strand(input, vertical(0.01f * static_cast<float>(i), 0, i == 0 ? 1.0f : 0.05f),
+               std::vector<int32_t>(11, 0), std::vector<int32_t>(11, -1));
+  StyleFeatures robust = style_features(input, {});
+  EXPECT_NEAR(robust.paper[0].long_length_h, 0.2, 1e-6);
+  EXPECT_NEAR(robust.paper[0].far_scalp_distance_h, 0.2, 1e-6);
+  EXPECT_NEAR(robust.paper[0].mean_length_h, (39 * 0.05 + 1.0) / 40 / 0.25, 1e-6);
+  StyleFeatureParams maxima;
+  maxima.robust_max_quantile = 1;
+  StyleFeatures paper = style_features(input, maxima);
+  EXPECT_NEAR(paper.paper[0].long_length_h, 4.0, 1e-6);
+  EXPECT_NEAR(paper.paper[0].far_scalp_distance_h, 4.0, 1e-6);
+}
+
 TEST(StyleFeatures, LengthsAndScalpDistanceOfStraightStrands) {
   StyleFeatureInput input = flat_scalp_input();
   input.cluster_count = 1;
   for (int i = 0; i < 4; ++i)
     add_strand(input, vertical(0.1f * static_cast<float>(i), 0, 0.05f + 0.05f * i),
                std::vector<int32_t>(11, 0), std::vector<int32_t>(11, -1));
-  StyleFeatures features = style_features(input, {});
+  StyleFeatureParams maxima;
+  maxima.robust_max_quantile = 1;  // the paper's maxima
+  StyleFeatures features = style_features(input, maxima);
   const PaperFeatures& paper = features.paper[0];
   // Lengths 0.05, 0.10, 0.15, 0.20 m with H = 0.25: mean 0.5 H, max 0.8 H.
   EXPECT_NEAR(paper.mean_length_h, 0.5, 1e-6);
-  EXPECT_NEAR(paper.max_length_h, 0.8, 1e-6);
-  EXPECT_NEAR(paper.max_scalp_distance_h, 0.8, 1e-6);  // the tip of the longest
+  EXPECT_NEAR(paper.long_length_h, 0.8, 1e-6);
+  EXPECT_NEAR(paper.far_scalp_distance_h, 0.8, 1e-6);  // the tip of the longest
   EXPECT_DOUBLE_EQ(paper.root_share, 1.0);
   EXPECT_DOUBLE_EQ(paper.tip_share, 1.0);
   EXPECT_EQ(paper.middle_node_count, 0);

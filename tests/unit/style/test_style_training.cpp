@@ -44,9 +44,9 @@ StyleTable small_table() {
   table.feature_names = {"a", "b"};
   Eigen::RowVectorXd row(2);
   row << 0.1, 1.0 / 3.0;
-  table.append(row, 3, "braid_006", 2, false, 0.75);
+  table.append(row, 3, "braid_006", 2, false, 0.75, 412);
   row << -2.5e-7, 12;
-  table.append(row, 1, "ponytail01", 0, true, 1);
+  table.append(row, 1, "ponytail01", 0, true, 1, 6488);
   return table;
 }
 
@@ -62,7 +62,18 @@ TEST(StyleTable, TsvReadsBackExactly) {
   EXPECT_EQ(back.cluster, table.cluster);
   EXPECT_EQ(back.real_mesh, table.real_mesh);
   EXPECT_EQ(back.label_purity, table.label_purity);
-  EXPECT_THROW(table.append(Eigen::RowVectorXd::Zero(3), 0, "m", 0, false, 1), Error);
+  EXPECT_EQ(back.strand_count, table.strand_count);
+  EXPECT_THROW(table.append(Eigen::RowVectorXd::Zero(3), 0, "m", 0, false, 1, 1), Error);
+}
+
+TEST(StyleTable, TablesWrittenBeforeTheStrandsColumnStillRead) {
+  test::TemporaryDirectory directory("style_table");
+  std::ofstream(directory / "old.tsv") << "model\tcluster\treal_mesh\tlabel\tlabel_purity\ta\n"
+                                       << "m\t0\t1\tfixed\t1\t0.5\n";
+  StyleTable old = read_style_table_tsv(directory / "old.tsv");
+  EXPECT_EQ(old.feature_names, std::vector<std::string>{"a"});
+  EXPECT_EQ(old.strand_count, std::vector<int64_t>{0});
+  EXPECT_EQ(old.rows(0, 0), 0.5);
 }
 
 TEST(StyleTable, TsvErrorsNameTheLine) {

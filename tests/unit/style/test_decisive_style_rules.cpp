@@ -1,0 +1,95 @@
+// The paper's criteria where they are decisive (issue 26): hair lying on the scalp to its
+// ends is short, a cap gathered into a band and going on past it is fixed; elsewhere
+// the classifiers decide.
+#include <gtest/gtest.h>
+
+#include "hair/core/error.h"
+#include "hair/style/decisive_style_rules.h"
+
+namespace hair {
+namespace {
+
+/// Short hair combed flat on the head: on the scalp (0.02 H), ending in the cluster, its
+/// ends as spread as the rest.
+PaperFeatures lying_on_the_head() {
+  PaperFeatures features;
+  features.mean_length_h = 0.45;
+  features.far_scalp_distance_h = 0.02;
+  features.tip_share = 0.99;
+  features.gathering_ratio = 0.55;
+  features.root_share = 1.0;
+  return features;
+}
+
+/// A ponytail's cap: from the roots, on the scalp, gathered into the band, and going on.
+PaperFeatures cap_into_a_band() {
+  PaperFeatures features;
+  features.mean_length_h = 0.55;
+  features.far_scalp_distance_h = 0.08;
+  features.tip_share = 0.14;
+  features.gathering_ratio = 0.24;
+  features.root_share = 0.93;
+  return features;
+}
+
+TEST(DecisiveStyleRules, HairLyingOnTheHeadToItsEndsIsShort) {
+  DecisiveStyleRules rules;
+  EXPECT_EQ(decisive_style(lying_on_the_head(), rules), HairStyle::short_hair);
+  // Hair that leaves the scalp (a bob's hanging sides, 0.3 H off it) is not decided.
+  PaperFeatures hanging = lying_on_the_head();
+  hanging.far_scalp_distance_h = 0.3;
+  EXPECT_FALSE(decisive_style(hanging, rules));
+  // Nor the first piece of long hair lying on the scalp: it goes on into another cluster.
+  PaperFeatures first_piece = lying_on_the_head();
+  first_piece.tip_share = 0.2;
+  EXPECT_FALSE(decisive_style(first_piece, rules));
+  // Nor locks on the scalp whose ends gather (a face-framing lock, a cap into a band).
+  PaperFeatures gathered = lying_on_the_head();
+  gathered.gathering_ratio = 0.3;
+  EXPECT_FALSE(decisive_style(gathered, rules));
+}
+
+TEST(DecisiveStyleRules, ACapGatheredIntoABandAndGoingOnIsFixed) {
+  DecisiveStyleRules rules;
+  EXPECT_EQ(decisive_style(cap_into_a_band(), rules), HairStyle::fixed);
+  PaperFeatures ending_in_it = cap_into_a_band();  // a gathered lock that ends: not decided
+  ending_in_it.tip_share = 0.9;
+  EXPECT_FALSE(decisive_style(ending_in_it, rules));
+  PaperFeatures off_the_scalp = cap_into_a_band();  // a tail, hanging off the head
+  off_the_scalp.far_scalp_distance_h = 0.6;
+  EXPECT_FALSE(decisive_style(off_the_scalp, rules));
+  PaperFeatures not_from_roots = cap_into_a_band();  // a middle piece
+  not_from_roots.root_share = 0.1;
+  EXPECT_FALSE(decisive_style(not_from_roots, rules));
+  PaperFeatures spread = cap_into_a_band();  // not gathered
+  spread.gathering_ratio = 0.8;
+  EXPECT_FALSE(decisive_style(spread, rules));
+}
+
+TEST(DecisiveStyleRules, SwitchedOffTheyDecideNothing) {
+  DecisiveStyleRules off;
+  off.enabled = false;
+  EXPECT_FALSE(decisive_style(lying_on_the_head(), off));
+  EXPECT_FALSE(decisive_style(cap_into_a_band(), off));
+}
+
+TEST(DecisiveStyleRules, RowsOfAFeatureTableByColumnName) {
+  std::vector<std::string> names = {"mean_length_h", "root_share", "tip_share", "gathering_ratio",
+                                    "far_scalp_distance_h"};
+  Eigen::MatrixXd rows(3, 5);
+  PaperFeatures a = lying_on_the_head(), b = cap_into_a_band();
+  rows << a.mean_length_h, a.root_share, a.tip_share, a.gathering_ratio, a.far_scalp_distance_h,
+      b.mean_length_h, b.root_share, b.tip_share, b.gathering_ratio, b.far_scalp_distance_h, 1.5,
+      1.0, 1.0, 0.9, 0.7;  // long hair hanging: not decided
+  EXPECT_TRUE(has_decisive_rule_features(names));
+  EXPECT_EQ(decisive_styles_of_rows(rows, names, {}),
+            (std::vector<int32_t>{static_cast<int32_t>(HairStyle::short_hair),
+                                  static_cast<int32_t>(HairStyle::fixed), -1}));
+  std::vector<std::string> paper = {"mean_length_h", "root_share", "gathering_ratio",
+                                    "far_scalp_distance_h", "twist_h"};
+  EXPECT_FALSE(has_decisive_rule_features(paper));
+  EXPECT_THROW(decisive_styles_of_rows(rows, paper, {}), Error);
+}
+
+}  // namespace
+}  // namespace hair
