@@ -38,8 +38,8 @@ styles() {
 
 echo "Machine: $(nproc) cores, $(cpu_name); classify --threads $threads; median of $runs runs; model $model_file; parameters $params."
 echo
-table="| model | clusters | classify (ms) | deterministic | hand labels | random forest (strands) | SVM (strands) |
-|---|---:|---:|---|---|---|---|"
+table="| model | clusters | classify (ms) | deterministic | hand labels | styles.h5 (strands) | decided by the criteria | random forest (strands) | SVM (strands) |
+|---|---:|---:|---|---|---|---|---|---|"
 for mesh in "$makehuman"/hair/*.obj; do
   model=$(basename "$mesh" .obj)
   dir=$work/$model
@@ -54,7 +54,9 @@ for mesh in "$makehuman"/hair/*.obj; do
   clusters=$(h5ls "$dir/clusters.h5/clusters/group_count" | sed 's/.*{\([0-9]*\)}.*/\1/')
   hand=$(awk -v m="$model" '!/^#/ && $1 == m { print $3 }' "$labels" | sort | uniq -c |
          awk '{ printf "%s%s %s", (n++ ? ", " : ""), $2, $1 }')
-  table+=$'\n'"| $model | $clusters | $ms | $same | ${hand:-none} (patches) | $(styles "$dir/styles.h5" /clusters/forest_style) | $(styles "$dir/styles.h5" /clusters/svm_style) |"
+  ruled=$(h5dump -d /clusters/ruled "$dir/styles.h5" | sed -n '/DATA {/,/}/p' | sed 's/([0-9]*)://' |
+          grep -o '[0-9]\+' | awk '$1 == 1 { n++ } END { print n + 0 }')
+  table+=$'\n'"| $model | $clusters | $ms | $same | ${hand:-none} (patches) | $(styles "$dir/styles.h5" /clusters/style) | $ruled clusters | $(styles "$dir/styles.h5" /clusters/forest_style) | $(styles "$dir/styles.h5" /clusters/svm_style) |"
   if [[ -n "$pictures" ]]; then
     mkdir -p "$pictures"
     "$bin/hair-render" "$dir/styles.h5" --strands "$dir/strands.h5" --extract "$dir/extract.h5" \

@@ -38,7 +38,10 @@ def load(path):
     with open(path) as f:
         rows = list(csv.reader(f, delimiter="\t"))
     header, rows = rows[0], rows[1:]
-    first_feature = header.index("label_purity") + 1
+    # The metadata columns end with label_purity, or with strands in tables written since
+    # the leave-one-model-out report (issue 26).
+    last_meta = "strands" if "strands" in header else "label_purity"
+    first_feature = header.index(last_meta) + 1
     return {
         "names": header[first_feature:],
         "X": np.array([[float(v) for v in row[first_feature:]] for row in rows]),

@@ -64,8 +64,8 @@ int main(int argc, char** argv) {
                    share);
   double unsure_below = hair::kDefaultUnsureBelow;
   app.params().add("unsure_below", unsure_below,
-                   "a cluster whose classifier gives its style a smaller share of votes is "
-                   "unsure (styles.h5, the picture, the log)",
+                   "a cluster whose classifier is less sure of its style is unsure (styles.h5, the "
+                   "picture, the log): the SVM's margin, or the forest's share of votes",
                    hair::ParamRange::closed(0.0, 1.0));
 
   return app.run(argc, argv, [&] {
@@ -86,8 +86,8 @@ int main(int argc, char** argv) {
           hair::resolve_style_pins(hair::read_style_pins(overrides_path), styles.style,
                                    input.strands, input.head_height_m, overrides_path);
       for (const hair::ResolvedPin& pin : pins)
-        spdlog::info("{}: cluster {} pinned {} (the classifier said {}, {:.2f} of its votes){}",
-                     overrides_path, pin.cluster, hair::hair_style_name(pin.style),
+        spdlog::info("{}: cluster {} pinned {} (it was {}, confidence {:.2f}){}", overrides_path,
+                     pin.cluster, hair::hair_style_name(pin.style),
                      hair::hair_style_name(static_cast<hair::HairStyle>(
                          styles.style[static_cast<size_t>(pin.cluster)])),
                      styles.confidence[static_cast<size_t>(pin.cluster)],
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
                         hair::hair_style_name(static_cast<hair::HairStyle>(styles.style[c])),
                         styles.confidence[c]);
     if (!unsure_list.empty())
-      spdlog::info("{}: unsure (under {:.2f} of the votes; pin them with --overrides if wrong): {}",
+      spdlog::info("{}: unsure (confidence under {:.2f}; pin them with --overrides if wrong): {}",
                    strands_path, unsure_below, unsure_list);
     if (classified < static_cast<int>(styles.style.size()))
       spdlog::info("{}: {} clusters have no grown strands and are not classified", strands_path,

@@ -160,11 +160,12 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
   const std::vector<int8_t> svm_style =
       hair::h5::read_enum_dataset(file, "/clusters/svm_style", hair::style_members());
   const hair::StyleCertainty certainty = hair::read_style_certainty(file);
-  const auto votes = hair::h5::read_matrix<int32_t, Eigen::Dynamic>(file, "/clusters/svm_votes");
+  const auto decision =
+      hair::h5::read_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values");
   const std::vector<int8_t> classes =
       hair::h5::read_enum_dataset(file, "/classes/style", hair::style_members());
   EXPECT_DOUBLE_EQ(certainty.unsure_below, 0.6);
-  int ruled = 0;
+  int ruled = 0, unsure = 0;
   for (size_t c = 0; c < style.size(); ++c) {
     SCOPED_TRACE("cluster " + std::to_string(c));
     EXPECT_EQ(certainty.pinned[c], 0);
@@ -180,16 +181,26 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
       EXPECT_EQ(certainty.unsure[c], 0);
       continue;
     }
-    // The SVM's one-vs-one wins of the style it gave over k - 1, and unsure below 0.6.
+    // The SVM's margin: the smallest decision value of the contests of the style it gave,
+    // signed for it (pairs i < j in order, > 0 for i), within [0, 1]; unsure below 0.6.
     EXPECT_EQ(style[c], svm_style[c]);
     const auto k = std::find(classes.begin(), classes.end(), style[c]) - classes.begin();
-    EXPECT_DOUBLE_EQ(certainty.confidence[c], votes(static_cast<Eigen::Index>(c), k) /
-                                                  static_cast<double>(classes.size() - 1));
+    double margin = 1.0;
+    Eigen::Index pair = 0;
+    for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(classes.size()); ++i)
+      for (Eigen::Index j = i + 1; j < static_cast<Eigen::Index>(classes.size()); ++j, ++pair) {
+        const double value = decision(static_cast<Eigen::Index>(c), pair);
+        if (i == k) margin = std::min(margin, value);
+        if (j == k) margin = std::min(margin, -value);
+      }
+    EXPECT_DOUBLE_EQ(certainty.confidence[c], std::clamp(margin, 0.0, 1.0));
     EXPECT_EQ(certainty.unsure[c], certainty.confidence[c] < 0.6 ? 1 : 0);
-    EXPECT_GT(certainty.confidence[c], 0.0);
+    unsure += certainty.unsure[c];
   }
-  // ponytail01's cap, gathered into the band, is decided by the fixed rule.
+  // ponytail01's cap, gathered into the band, is decided by the fixed rule; its front-crown
+  // patch, whose strands grow forward and end on the head, is called short, unsure.
   EXPECT_GE(ruled, 1);
+  EXPECT_GE(unsure, 1);
 }
 
 TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {

@@ -6,6 +6,23 @@
 
 namespace hair {
 
+double svm_margin_confidence(const PukSvm& svm, std::span<const double> decision_values,
+                             size_t chosen) {
+  if (decision_values.size() != svm.decision_functions.size())
+    throw Error::usage("svm margin confidence: " + std::to_string(decision_values.size()) +
+                       " decision values for " + std::to_string(svm.decision_functions.size()) +
+                       " decision functions");
+  double smallest = 1.0;  // one class: nothing to lose
+  for (size_t p = 0; p < decision_values.size(); ++p) {
+    const SvmDecisionFunction& function = svm.decision_functions[p];
+    if (static_cast<size_t>(function.first) == chosen)
+      smallest = std::min(smallest, decision_values[p]);
+    else if (static_cast<size_t>(function.second) == chosen)
+      smallest = std::min(smallest, -decision_values[p]);
+  }
+  return std::clamp(smallest, 0.0, 1.0);
+}
+
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
                              StyleClassifierKind classifier, const DecisiveStyleRules& rules) {
   const Eigen::MatrixXd& rows = feature_set_rows(features, model.feature_set);
@@ -47,11 +64,14 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
         std::find(model.class_labels.begin(), model.class_labels.end(), result.style[i]) -
         model.class_labels.begin());
     if (chosen < class_count)
-      result.confidence[i] = classifier == StyleClassifierKind::svm
-                                 ? (class_count > 1 ? result.svm_votes(c, chosen) /
-                                                          static_cast<double>(class_count - 1)
-                                                    : 1.0)
-                                 : result.forest_vote_fraction(c, chosen);
+      result.confidence[i] =
+          classifier == StyleClassifierKind::svm
+              ? svm_margin_confidence(
+                    model.svm, prediction.svm_decision_values,
+                    static_cast<size_t>(std::find(model.svm.class_labels.begin(),
+                                                  model.svm.class_labels.end(), result.style[i]) -
+                                        model.svm.class_labels.begin()))
+              : result.forest_vote_fraction(c, chosen);
     if (std::optional<HairStyle> decided = decisive_style(features.paper[i], rules)) {
       result.style[i] = static_cast<int8_t>(*decided);
       result.confidence[i] = 1.0;

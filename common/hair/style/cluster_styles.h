@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "hair/style/decisive_style_rules.h"
@@ -22,9 +23,9 @@ struct ClusterStyles {
   Eigen::MatrixXd svm_decision_values;   ///< #clusters x k (k - 1) / 2, 0 where not classified
   Eigen::MatrixXi svm_votes;             ///< #clusters x k
   Eigen::MatrixXd forest_vote_fraction;  ///< #clusters x k
-  /// Per cluster, how sure the chosen classifier is of `style`, in [0, 1]: the random
-  /// forest's vote share of that class, or the SVM's one-vs-one wins of it over k - 1;
-  /// 0 for a cluster without a style. A pinned cluster (style_overrides.h) keeps what the
+  /// Per cluster, how sure the chosen classifier is of `style`, in [0, 1]: the SVM's
+  /// margin (svm_margin_confidence), or the random forest's vote share of that class; 0
+  /// for a cluster without a style. A pinned cluster (style_overrides.h) keeps what the
   /// classifier's confidence was in its own answer.
   std::vector<double> confidence;
   /// Per cluster, 1 where a user pinned its style (classify --overrides).
@@ -39,6 +40,16 @@ struct ClusterStyles {
 /// the picture, the stage's log) by default: the random forest gave the style fewer than
 /// three votes in five.
 inline constexpr double kDefaultUnsureBelow = 0.6;
+
+/// How sure the SVM is of class index `chosen` (into svm.class_labels) for a row whose
+/// one-vs-one decision values (in svm.decision_functions' order) are given: the smallest
+/// of its pairwise decision values, signed for it, clipped to [0, 1]. A C-SVC's decision
+/// function is 1 on its margin, so 1 means the row lies beyond the margin of every
+/// contest the class won, and values towards 0 that it is near a boundary (0 as well
+/// where it lost a contest and still won the vote). Unlike the share of won contests,
+/// which is 1 for nearly every row, this grades the answer.
+double svm_margin_confidence(const PukSvm& svm, std::span<const double> decision_values,
+                             size_t chosen);
 
 /// Classifies every cluster that grown strands run through by its features of the
 /// model's feature set (feature_set_rows(); their names must be the model's); a cluster

@@ -93,3 +93,33 @@ TEST(DecisiveStyleRules, RowsOfAFeatureTableByColumnName) {
 
 }  // namespace
 }  // namespace hair
+
+// The SVM's confidence as cluster_styles gives it (cluster_styles.h): its margin in the
+// contests of the class it chose, on a hand-made three-class SVM.
+#include "hair/style/cluster_styles.h"
+
+namespace hair {
+namespace {
+
+TEST(SvmMarginConfidence, TheSmallestMarginOfTheChosenClassesContests) {
+  PukSvm svm;
+  svm.class_labels = {0, 1, 2};
+  for (auto [first, second] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}}) {
+    SvmDecisionFunction function;
+    function.first = first;
+    function.second = second;
+    svm.decision_functions.push_back(function);
+  }
+  // Class 0 beats 1 by 2.5 and 2 by 0.4: inside the margin of one contest.
+  std::vector<double> values = {2.5, 0.4, -3.0};
+  EXPECT_DOUBLE_EQ(svm_margin_confidence(svm, values, 0), 0.4);
+  // Class 2 beats 1 by 3 but lost to 0: no confidence.
+  EXPECT_DOUBLE_EQ(svm_margin_confidence(svm, values, 2), 0.0);
+  // Beyond every margin: 1.
+  std::vector<double> clear = {1.5, 2.0, 0.0};
+  EXPECT_DOUBLE_EQ(svm_margin_confidence(svm, clear, 0), 1.0);
+  EXPECT_THROW(svm_margin_confidence(svm, std::vector<double>{1.0}, 0), Error);
+}
+
+}  // namespace
+}  // namespace hair
