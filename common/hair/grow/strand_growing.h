@@ -52,8 +52,9 @@ struct GrowParams {
   /// card ends before it (cards stacked on a cap end anywhere) joins the nearest card that
   /// feeds it, running its way, within continue_radius_h and continue_max_angle_deg.
   /// false: it ends where its card does. Off by default: on braid01 it sends 5,539
-  /// strands into the braid instead of 3,314, and the shipped classifier, trained on
-  /// strands grown without it, then calls the braid normal (issue 26 retrains).
+  /// strands into the braid instead of 3,314, and with the style classifiers retrained
+  /// on strands grown with it (issue 26, docs/classify.md) the real meshes held out come
+  /// out worse (75.8% of strands against 80.1%: long01's long layer is called short).
   bool join_continued_flow = false;
   /// A strand following an input strand's group is lost (and looks for the next group)
   /// farther than this from the group's rails.

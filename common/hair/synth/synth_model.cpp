@@ -1225,7 +1225,7 @@ HairStyleSpec preset(const std::string& name) {
   return spec;
 }
 
-HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed) {
+HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed, bool artists_families) {
   Rng rng(seed ^ 0x9e3779b9u);
   for (ComponentSpec& component : spec.components) {
     int preset_stream_count = component.stream_count;
@@ -1257,6 +1257,7 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed) {
   if (std::any_of(spec.components.begin(), spec.components.end(),
                   [](const ComponentSpec& c) { return c.kind == ComponentSpec::Kind::short_cap; }))
     defects.normal_pieces_max = rng.chance(1.0 / 3.0) ? 2 : 1;
+  if (!artists_families) return spec;
   // Families of artists' meshes the presets alone miss (issue 26), drawn after all else so
   // the knobs above stay as they were: a third of the short caps are swept back, their
   // whorl moved to the top of the forehead so the grids run from the front over the head
@@ -1284,7 +1285,7 @@ std::vector<CorpusEntry> corpus_plan(int count, uint32_t base_seed, bool with_pa
     CorpusEntry entry;
     entry.preset = names[static_cast<size_t>(i) % names.size()];
     entry.seed = base_seed * 1000u + static_cast<uint32_t>(i);
-    entry.spec = varied_spec(preset(entry.preset), entry.seed);
+    entry.spec = varied_spec(preset(entry.preset), entry.seed, with_painted);
     char index[16];
     std::snprintf(index, sizeof index, "%03d", i);
     entry.name = entry.preset + "_" + index;
