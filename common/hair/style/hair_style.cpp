@@ -23,4 +23,9 @@ std::optional<HairStyle> hair_style_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::string hair_style_label_text(int32_t label) {
+  if (label >= 0 && label <= 3) return hair_style_name(static_cast<HairStyle>(label));
+  return std::to_string(label);
+}
+
 }  // namespace hair

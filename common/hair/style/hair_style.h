@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace hair {
@@ -18,6 +19,10 @@ enum class HairStyle : int8_t {
 /// The paper's word for a style: "normal", "fixed", "short", "braided"; "unknown" for a
 /// value outside the enumeration.
 const char* hair_style_name(HairStyle style);
+
+/// The word of a class label (a HairStyle value) in a report, or the label's number for
+/// one outside the styles.
+std::string hair_style_label_text(int32_t label);
 
 /// The style named by one of hair_style_name()'s words; nullopt for any other text.
 std::optional<HairStyle> hair_style_from_name(std::string_view name);

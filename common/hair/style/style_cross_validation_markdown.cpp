@@ -9,11 +9,6 @@
 namespace hair {
 namespace {
 
-std::string class_name(int32_t label) {
-  if (label >= 0 && label <= 3) return hair_style_name(static_cast<HairStyle>(label));
-  return std::to_string(label);
-}
-
 std::string percent(int part, int whole) {
   if (whole <= 0) return "–";
   return fmt::format("{:.1f}%", 100.0 * part / whole);
@@ -26,12 +21,13 @@ std::string accuracy_cell(int correct, int rows) {
 void append_confusion(std::string& text, const char* title, const StyleCrossValidation& result,
                       const ClassificationScores& scores) {
   text += fmt::format("{} (rows: truth, columns: predicted)\n\n| truth \\ predicted |", title);
-  for (int32_t label : result.class_labels) text += fmt::format(" {} |", class_name(label));
+  for (int32_t label : result.class_labels)
+    text += fmt::format(" {} |", hair_style_label_text(label));
   text += "\n|---|";
   for (size_t c = 0; c < result.class_labels.size(); ++c) text += "---:|";
   text += "\n";
   for (size_t truth = 0; truth < result.class_labels.size(); ++truth) {
-    text += fmt::format("| {} |", class_name(result.class_labels[truth]));
+    text += fmt::format("| {} |", hair_style_label_text(result.class_labels[truth]));
     for (size_t predicted = 0; predicted < result.class_labels.size(); ++predicted)
       text += fmt::format(" {} |", scores.confusion(static_cast<Eigen::Index>(truth),
                                                     static_cast<Eigen::Index>(predicted)));
@@ -65,9 +61,9 @@ std::string style_cross_validation_markdown(const StyleCrossValidation& result,
   for (size_t c = 0; c < result.class_labels.size(); ++c) {
     const ClassScore& svm = result.svm.classes[c];
     const ClassScore& forest = result.forest.classes[c];
-    text += fmt::format("| {} | {} | {} | {} | {} | {} |\n", class_name(svm.label), svm.rows,
-                        percent(svm.correct, svm.predicted), percent(svm.correct, svm.rows),
-                        percent(forest.correct, forest.predicted),
+    text += fmt::format("| {} | {} | {} | {} | {} | {} |\n", hair_style_label_text(svm.label),
+                        svm.rows, percent(svm.correct, svm.predicted),
+                        percent(svm.correct, svm.rows), percent(forest.correct, forest.predicted),
                         percent(forest.correct, forest.rows));
   }
   text += "\n";

@@ -21,11 +21,6 @@ size_t class_index(std::span<const int32_t> class_labels, int32_t label) {
   return static_cast<size_t>(found - class_labels.begin());
 }
 
-std::string class_name(int32_t label) {
-  if (label >= 0 && label <= 3) return hair_style_name(static_cast<HairStyle>(label));
-  return std::to_string(label);
-}
-
 std::string percent(double part, double whole) {
   if (whole <= 0) return "–";
   return fmt::format("{:.1f}%", 100.0 * part / whole);
@@ -35,12 +30,14 @@ void append_weighted_confusion(std::string& text, const char* title,
                                const WeightedStyleScores& scores) {
   text +=
       fmt::format("{} (strands; rows: truth, columns: predicted)\n\n| truth \\ predicted |", title);
-  for (int32_t label : scores.class_labels) text += fmt::format(" {} |", class_name(label));
+  for (int32_t label : scores.class_labels)
+    text += fmt::format(" {} |", hair_style_label_text(label));
   text += "\n|---|";
   for (size_t c = 0; c < scores.class_labels.size(); ++c) text += "---:|";
   text += "\n";
   for (Eigen::Index truth = 0; truth < scores.confusion.rows(); ++truth) {
-    text += fmt::format("| {} |", class_name(scores.class_labels[static_cast<size_t>(truth)]));
+    text += fmt::format("| {} |",
+                        hair_style_label_text(scores.class_labels[static_cast<size_t>(truth)]));
     for (Eigen::Index predicted = 0; predicted < scores.confusion.cols(); ++predicted)
       text += fmt::format(" {:.0f} |", scores.confusion(truth, predicted));
     text += "\n";
@@ -161,7 +158,7 @@ std::string model_holdout_markdown(const ModelHoldout& holdout,
     auto i = static_cast<Eigen::Index>(c);
     const WeightedStyleScores& svm = holdout.svm_scores;
     const WeightedStyleScores& forest = holdout.forest_scores;
-    text += fmt::format("| {} | {:.0f} | {} | {} | {} | {} |\n", class_name(classes[c]),
+    text += fmt::format("| {} | {:.0f} | {} | {} | {} | {} |\n", hair_style_label_text(classes[c]),
                         forest.confusion.row(i).sum(),
                         percent(svm.confusion(i, i), svm.confusion.col(i).sum()),
                         percent(svm.confusion(i, i), svm.confusion.row(i).sum()),
@@ -186,12 +183,13 @@ std::string model_holdout_markdown(const ModelHoldout& holdout,
       svm_right += holdout.svm[row] == holdout.truth[row] ? w : 0;
       if (!clusters.empty()) clusters += ", ";
       int32_t cluster = cluster_of_row[static_cast<size_t>(holdout.rows[row])];
-      clusters +=
-          holdout.ruled[row]
-              ? fmt::format("{} {} → {} by rule ({:.0f})", cluster, class_name(holdout.truth[row]),
-                            class_name(holdout.svm[row]), w)
-              : fmt::format("{} {} → {} / {} ({:.0f})", cluster, class_name(holdout.truth[row]),
-                            class_name(holdout.forest[row]), class_name(holdout.svm[row]), w);
+      clusters += holdout.ruled[row] ? fmt::format("{} {} → {} by rule ({:.0f})", cluster,
+                                                   hair_style_label_text(holdout.truth[row]),
+                                                   hair_style_label_text(holdout.svm[row]), w)
+                                     : fmt::format("{} {} → {} / {} ({:.0f})", cluster,
+                                                   hair_style_label_text(holdout.truth[row]),
+                                                   hair_style_label_text(holdout.forest[row]),
+                                                   hair_style_label_text(holdout.svm[row]), w);
     }
     // A model is named by its folder; its last part says which.
     std::string name = std::filesystem::path(holdout.models[m]).filename().string();
