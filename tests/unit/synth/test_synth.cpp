@@ -221,6 +221,54 @@ TEST(SynthPresets, CorpusCyclingThePresetsMeetsTheIssuesMinimums) {
   EXPECT_GE(mixed, 10);
 }
 
+TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamilies) {
+  // What `hair-synth corpus --painted --count 90` plans (the style classifiers' corpus).
+  std::vector<CorpusEntry> plain = corpus_plan(90, 1), painted = corpus_plan(90, 1, true);
+  ASSERT_EQ(painted.size(), 90u);
+  EXPECT_EQ(painted[11].preset, "ring_cap");  // after the eleven presets
+  EXPECT_EQ(painted[17].preset, "ringlets");
+  EXPECT_EQ(painted[18].preset, "long_straight");
+  int swept_back = 0, waist_long = 0, braids = 0, caps = 0;
+  for (size_t i = 0; i < painted.size(); ++i) {
+    const CorpusEntry& entry = painted[i];
+    HairStyleSpec varied = varied_spec(preset(entry.preset), entry.seed);
+    for (size_t c = 0; c < entry.spec.components.size(); ++c) {
+      const ComponentSpec& drawn = entry.spec.components[c];
+      const ComponentSpec& base = varied.components[c];
+      if (drawn.kind == ComponentSpec::Kind::short_cap) {
+        ++caps;
+        if (drawn.band_azimuth_deg != base.band_azimuth_deg) {
+          ++swept_back;  // whorl at the top of the forehead
+          EXPECT_LE(std::abs(drawn.band_azimuth_deg), 30.0);
+          EXPECT_GE(drawn.band_polar_deg, 35.0);
+          EXPECT_LE(drawn.band_polar_deg, 50.0);
+        }
+      }
+      if (drawn.kind == ComponentSpec::Kind::braid) {
+        ++braids;
+        double ratio = drawn.length_max_m / base.length_max_m;
+        if (ratio > 1.0) {
+          ++waist_long;
+          EXPECT_GE(ratio, 1.5 - 1e-12);
+          EXPECT_LE(ratio, 2.0 + 1e-12);
+        }
+      }
+    }
+  }
+  // Every other knob as varied_spec draws it: the plain corpus's models of the same index
+  // and preset are the same but for the families.
+  EXPECT_EQ(plain[5].preset, painted[5].preset);
+  EXPECT_EQ(plain[5].spec.defects.gap_m, painted[5].spec.defects.gap_m);
+  std::printf(
+      "[ synth    ] painted corpus of 90: %d of %d short caps swept back, %d of %d braids "
+      "waist-long\n",
+      swept_back, caps, waist_long, braids);
+  EXPECT_GE(swept_back, 1);
+  EXPECT_LT(swept_back, caps);
+  EXPECT_GE(waist_long, 1);
+  EXPECT_LT(waist_long, braids);
+}
+
 /// Hair lying on the head (short_cap): one grid per stream, short and root-free, lying
 /// 2-5 mm off the scalp from near the crown down to the hairline, within its drawn
 /// length; a layered cut (normal_pieces_max 2) gives a root and a tip piece, both short.
@@ -389,14 +437,16 @@ TEST(SynthPresets, TheBunCoilsRoundItsBandAndTheRingletsWindRoundTheirAxis) {
     ++tubes;
     std::vector<int> faces_at(static_cast<size_t>(patch.vertex_count), 0);
     for (int64_t f = patch.first_face; f < patch.first_face + patch.face_count; ++f)
-      for (int32_t v : ringlets.mesh.face(f)) ++faces_at[static_cast<size_t>(v - patch.first_vertex)];
+      for (int32_t v : ringlets.mesh.face(f))
+        ++faces_at[static_cast<size_t>(v - patch.first_vertex)];
     for (int count : faces_at) EXPECT_GE(count, 2);  // no open edge round the tube
   }
   EXPECT_GE(tubes, 15);
   int winding = 0;
   for (size_t s = 0; s < ringlets.stream_style.size(); ++s) {
     if (ringlets.stream_component[s] != 1) continue;
-    const auto first = ringlets.stream_centres.offsets[s], end = ringlets.stream_centres.offsets[s + 1];
+    const auto first = ringlets.stream_centres.offsets[s],
+               end = ringlets.stream_centres.offsets[s + 1];
     double turned = 0;
     Eigen::Vector2d previous = Eigen::Vector2d::Zero();
     for (int64_t row = first + 12; row + 4 < end; row += 2) {  // past the 3 cm fade-in
@@ -404,11 +454,13 @@ TEST(SynthPresets, TheBunCoilsRoundItsBandAndTheRingletsWindRoundTheirAxis) {
       int n = 0;
       for (int64_t k = std::max(first, row - 4); k <= row + 4; ++k, ++n)
         mean += ringlets.stream_centres.points.row(k).cast<double>().transpose();
-      const Eigen::Vector3d off = ringlets.stream_centres.points.row(row).cast<double>().transpose() - mean / n;
+      const Eigen::Vector3d off =
+          ringlets.stream_centres.points.row(row).cast<double>().transpose() - mean / n;
       const Eigen::Vector2d flat(off.x(), off.z());
       if (flat.norm() < 1e-4) continue;
       if (previous.norm() > 0)
-        turned += std::abs(std::atan2(previous.x() * flat.y() - previous.y() * flat.x(), previous.dot(flat)));
+        turned += std::abs(
+            std::atan2(previous.x() * flat.y() - previous.y() * flat.x(), previous.dot(flat)));
       previous = flat;
     }
     if (turned > 2 * M_PI) ++winding;
