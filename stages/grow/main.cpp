@@ -85,11 +85,13 @@ int main(int argc, char** argv) {
     hair::GrowResult result = hair::grow_strands(input, params);
     spdlog::info(
         "{}: {} strands, {} points, {} pushed out of the body, {} continuations ({} "
-        "into another cluster); {} strands joined the cards feeding a continued cluster",
+        "into another cluster); {} strands joined the cards feeding a continued cluster; {} "
+        "ended where the card they followed dives into the body",
         extract_path, result.strands.strand_count(), result.strands.point_count(),
         result.points_pushed_out,
         result.continuations_same_cluster + result.continuations_other_cluster,
-        result.continuations_other_cluster, result.strands_joining_continued_flow);
+        result.continuations_other_cluster, result.strands_joining_continued_flow,
+        result.strands_ended_at_body);
 
     hair::AtomicFile output(app.output_path());
     hair::h5::File file = hair::h5::File::create(output.temporary_path(), app.output_path());

@@ -394,7 +394,7 @@ class GrowingContext {
   std::vector<int32_t> point_strand_;
   std::vector<StrandEntry> entries_;
   std::unique_ptr<PointIndex> entry_index_;
-  std::unique_ptr<PointIndex> all_index_;  ///< every input point, by row
+  std::unique_ptr<PointIndex> all_index_;          ///< every input point, by row
   std::vector<uint8_t> group_feeds_continuation_;  ///< per group
   std::vector<double> length_to_tip_m_;
   std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
@@ -405,6 +405,19 @@ class GrowingContext {
 /// Steps between two pulls of a strand towards its layer's height.
 constexpr int kLayerEvery = 3;
 
+/// A step that, once pushed out of the body, advanced less than this share of a step along
+/// its direction ran into the body: where a card dives into the skin (bob01's front cards
+/// into the forehead), the rail points into the body, every point is pushed back out, and
+/// a strand that went on would tremble in place, 0.5 to 0.8 mm a step, until it reached
+/// max_length_h in points (bob01: 51,226 of its 85,101 input-strand segments, in 174
+/// strands). Hair stops where the body blocks it, so the strand ends there. A quarter:
+/// sliding along the body's curve at the clearance advances far more (the step less what
+/// the push-out removes, which is small unless the way runs into the surface), and
+/// trembling far less. One such step alone is a corner the strand gets round (at the end
+/// of ponytail01's cap field, before the band); kBlockedSteps in a row are the body.
+constexpr double kBlockedAdvance = 0.25;
+constexpr int kBlockedSteps = 2;
+
 /// One strand being grown: its points and the rule of each.
 struct GrowingStrand {
   std::vector<Vec3> points;
@@ -413,6 +426,8 @@ struct GrowingStrand {
   int64_t pushed_out = 0;
   int64_t continued_same = 0, continued_other = 0;
   int64_t joined = 0;  ///< times it joined the cards feeding a continuation (joined_feeder())
+  bool ended_at_body = false;  ///< its last steps tried ran into the body (kBlockedAdvance)
+  int blocked_steps = 0;       ///< steps in a row that hardly advanced
 };
 
 /// Grows one strand from `root`. `field` is its cluster's orientation field (null when the
@@ -431,8 +446,28 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
     strand.rules.push_back(rule);
     strand.clusters.push_back(cluster);
     strand.groups.push_back(group);
+    strand.ended_at_body = false;
   };
   add_point(root, GrowRule::root, root_cluster, -1);
+  // After add_point(): did the steps up to this one from `from` along `along` run into the
+  // body (kBlockedAdvance, kBlockedSteps)? Then those steps are taken back, and the strand
+  // ends at the body unless it goes on another way.
+  auto ran_into_body = [&](const Vec3& from, const Vec3& along) {
+    if ((strand.points.back() - from).dot(along) >= kBlockedAdvance * step_m) {
+      strand.blocked_steps = 0;
+      return false;
+    }
+    if (++strand.blocked_steps < kBlockedSteps) return false;
+    for (; strand.blocked_steps > 0 && strand.points.size() > 1; --strand.blocked_steps) {
+      strand.points.pop_back();
+      strand.rules.pop_back();
+      strand.clusters.pop_back();
+      strand.groups.pop_back();
+    }
+    strand.blocked_steps = 0;
+    strand.ended_at_body = true;
+    return true;
+  };
   auto full = [&] {
     return static_cast<int64_t>(strand.points.size()) >= params.max_points_per_strand;
   };
@@ -480,6 +515,9 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
       }
       if (!field->contains(next)) break;
       add_point(next, GrowRule::field, root_cluster, -1);
+      // The field runs into the body here: the input strands take over, as where the
+      // field ends early.
+      if (ran_into_body(point, *d2)) break;
       direction = *d2;
       length_m += step_m;
       point = strand.points.back();
@@ -533,6 +571,7 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
             next += towards.normalized() * std::min(excess_m, params.follow_pull * step_m);
         }
         add_point(next, GrowRule::input_strand, cluster, group);
+        if (ran_into_body(point, direction)) break;  // the rail dives into the body
         continue;
       }
     }
@@ -543,9 +582,9 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
     if (!entry) {
       // No strand starts here: where the hair continues into another cluster (a tail after
       // its band), join the cards that feed it.
-      const std::optional<int32_t> joined =
-          params.join_continued_flow ? context.joined_feeder(point, direction, visited)
-                                     : std::nullopt;
+      const std::optional<int32_t> joined = params.join_continued_flow
+                                                ? context.joined_feeder(point, direction, visited)
+                                                : std::nullopt;
       if (!joined) break;
       const int32_t joined_cluster = context.cluster_of_group(*joined);
       (joined_cluster == cluster ? strand.continued_same : strand.continued_other) += 1;
@@ -695,6 +734,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     result.continuations_same_cluster += strand.continued_same;
     result.continuations_other_cluster += strand.continued_other;
     result.strands_joining_continued_flow += strand.joined > 0 ? 1 : 0;
+    result.strands_ended_at_body += strand.ended_at_body ? 1 : 0;
   }
   result.strands = strand_set_from_polylines(polylines);
   result.strands.strand_attributes["cluster"] = root_cluster;

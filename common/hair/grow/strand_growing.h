@@ -125,6 +125,9 @@ struct GrowResult {
   /// Strands whose card ended on the cap and that joined the cards feeding a cluster that
   /// does not start at the root (GrowParams::join_continued_flow).
   int64_t strands_joining_continued_flow = 0;
+  /// Strands that ended where a step, pushed back out of the body, hardly advanced: the
+  /// card they followed, or their field, dives into the skin there.
+  int64_t strands_ended_at_body = 0;
   bool roots_from_any_type = false;  ///< no root-type group: roots took any input strand
 };
 

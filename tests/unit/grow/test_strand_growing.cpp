@@ -603,6 +603,77 @@ TEST(StrandGrowing, StrandsAlongInputStrandsThroughTheBodyArePushedOut) {
   EXPECT_LT(deepest_m, 1e-3);
 }
 
+// A card that dives into the skin (bob01's front cards run into the forehead): card 3's
+// rails run down the sphere to its equator and there turn straight in, towards the axis,
+// for 3 cm. Every step of a strand there is pushed back out of the body where it started;
+// such a strand used to tremble in place, 0.5 to 0.8 mm a step, until it was max_length_h
+// long in points. Now each strand of card 3's cluster ends where the card meets the body,
+// and every step it made along the field or the card advanced.
+TEST(StrandGrowing, StrandsEndWhereTheirCardDivesIntoTheBody) {
+  Scene scene = make_scene();
+  GrowInput& input = scene.input;
+  constexpr int32_t kDivingCard = 3;
+  constexpr double kDiveLength = 0.03;
+  const auto& group = int_attribute(input.input_strands, "group");
+  std::vector<Points3f> polylines;
+  std::vector<Vec3> corners;  // where each diving rail turns in
+  for (int64_t s = 0; s < input.input_strands.strand_count(); ++s) {
+    const int64_t first = input.input_strands.offsets[s];
+    const int64_t count = input.input_strands.offsets[s + 1] - first;
+    Points3f rail = input.input_strands.points.middleRows(first, count);
+    if (group[static_cast<size_t>(s)] == kDivingCard) {
+      const int equator = (kRailPoints - 1) * 70 / 90;  // polar 90 of 20..110 degrees
+      const Vec3 corner = point_of(rail, equator);
+      Points3f dive = straight_rail(corner, -card_frame(kDivingCard).out, kDiveLength);
+      Points3f diving(equator + dive.rows(), 3);
+      diving.topRows(equator) = rail.topRows(equator);
+      diving.bottomRows(dive.rows()) = dive;
+      rail = diving;
+      corners.push_back(corner);
+    }
+    polylines.push_back(rail);
+  }
+  StrandSet strands = strand_set_from_polylines(polylines);
+  strands.strand_attributes["group"] = group;
+  input.input_strands = std::move(strands);
+
+  GrowResult result = grow_strands(input, params_with(kStrandCount));
+  const double step_m = GrowParams{}.step_h * kHeadHeight;
+  const auto& cluster = int_attribute(result.strands, "cluster");
+  int64_t diving_strands = 0, most_points = 0, short_steps = 0;
+  double farthest_from_corner_m = 0;
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+    if (cluster[static_cast<size_t>(s)] != input.group_cluster[kDivingCard]) continue;
+    ++diving_strands;
+    most_points = std::max(most_points, result.strands.offsets[s + 1] - result.strands.offsets[s]);
+    for (int64_t row = result.strands.offsets[s] + 1; row < result.strands.offsets[s + 1]; ++row) {
+      const GrowRule rule = result.point_rule[static_cast<size_t>(row)];
+      if ((rule == GrowRule::field || rule == GrowRule::input_strand) &&
+          (point_of(result.strands.points, row) - point_of(result.strands.points, row - 1)).norm() <
+              0.25 * step_m)
+        ++short_steps;
+    }
+    double nearest_corner_m = std::numeric_limits<double>::infinity();
+    for (const Vec3& corner : corners)
+      nearest_corner_m = std::min(nearest_corner_m, (last_of(result.strands, s) - corner).norm());
+    farthest_from_corner_m = std::max(farthest_from_corner_m, nearest_corner_m);
+  }
+  std::printf(
+      "[ grow     ] sphere, card diving into the body: %lld strands, at most %lld points, "
+      "%lld steps under a quarter step, last points at most %.1f mm from the card's turn; "
+      "%lld strands ended at the body\n",
+      static_cast<long long>(diving_strands), static_cast<long long>(most_points),
+      static_cast<long long>(short_steps), 1e3 * farthest_from_corner_m,
+      static_cast<long long>(result.strands_ended_at_body));
+  ASSERT_GT(diving_strands, 20);
+  EXPECT_EQ(short_steps, 0);
+  // From the scalp to the equator is 70 degrees of a 0.104 m circle, 0.127 m: 27 steps.
+  EXPECT_LT(most_points, 40);
+  // The card is 24 mm wide; its strands end at the body by the turn, within two steps.
+  EXPECT_LT(farthest_from_corner_m, kOuterRail + 2 * step_m);
+  EXPECT_GE(result.strands_ended_at_body, diving_strands / 2);
+}
+
 TEST(StrandGrowing, SameResultForOneAndTwoThreads) {
   Scene scene = make_scene();
   const int threads_before = omp_get_max_threads();
