@@ -59,6 +59,28 @@ class GrowCli : public ::testing::Test {
 };
 std::unique_ptr<TemporaryDirectory> GrowCli::directory_;
 
+/// No strand stalls: every step moves on, none runs out of points (the default
+/// max_points_per_strand), and no two steps in a row along the field or an input strand
+/// advance less than a quarter of a step (a strand trembling against the body).
+void expect_no_stalls(const hair::StrandSet& strands, const std::vector<int8_t>& rule,
+                      double head_height_m) {
+  const double quarter_step_m = 0.25 * hair::GrowParams{}.step_h * head_height_m;
+  const auto short_step = [&](int64_t row) {
+    const auto r = static_cast<hair::GrowRule>(rule[static_cast<size_t>(row)]);
+    return (r == hair::GrowRule::field || r == hair::GrowRule::input_strand) &&
+           (strands.points.row(row) - strands.points.row(row - 1)).norm() < quarter_step_m;
+  };
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    EXPECT_LT(strands.strand_size(s), hair::GrowParams{}.max_points_per_strand) << "strand " << s;
+    for (int64_t row = strands.offsets[s] + 1; row < strands.offsets[s + 1]; ++row) {
+      ASSERT_GT((strands.points.row(row) - strands.points.row(row - 1)).norm(), 1e-4f)
+          << "strand " << s << ", point " << row - strands.offsets[s];
+      ASSERT_FALSE(row > strands.offsets[s] + 1 && short_step(row) && short_step(row - 1))
+          << "strand " << s << " trembles at point " << row - strands.offsets[s];
+    }
+  }
+}
+
 /// Checks strands.h5 of `out`: valid, kStrands strands with their attributes, roots on
 /// flagged scalp triangles, clusters of clusters.h5, no stalled strand, one rule per point.
 void expect_valid_strands(const Outputs& out) {
@@ -98,18 +120,11 @@ void expect_valid_strands(const Outputs& out) {
   }
   EXPECT_EQ(hair::h5::read_vector<int64_t>(file, "/clusters/strand_count"), per_cluster);
 
-  // No strand stalls: every step moves on, and none runs out of points (the default
-  // max_points_per_strand).
-  for (int64_t s = 0; s < kStrands; ++s) {
-    EXPECT_LT(strands.strand_size(s), hair::GrowParams{}.max_points_per_strand) << "strand " << s;
-    for (int64_t row = strands.offsets[s] + 1; row < strands.offsets[s + 1]; ++row)
-      ASSERT_GT((strands.points.row(row) - strands.points.row(row - 1)).norm(), 1e-4f)
-          << "strand " << s << ", point " << row - strands.offsets[s];
-  }
-
   std::vector<int8_t> rule =
       hair::h5::read_enum_dataset(file, "/strands/point_rule", hair::grow_rule_members());
   ASSERT_EQ(static_cast<int64_t>(rule.size()), strands.point_count());
+  expect_no_stalls(strands, rule, input.head_height_m);
+
   std::map<int8_t, int64_t> per_rule;
   for (int8_t r : rule) ++per_rule[r];
   for (int64_t s = 0; s < kStrands; ++s)
@@ -171,8 +186,8 @@ TEST_F(GrowCli, GrowsThePonytailSample) { expect_valid_strands(sample("ponytail0
 // root (no jump between points longer than a growing step and a bridge allow).
 TEST_F(GrowCli, ThePonytailsCapStrandsRunThroughTheBandIntoTheTail) {
   const Outputs out = sample("ponytail01", true);
-  const double neck_y_m = hair::h5::read_double_attribute(
-      hair::h5::File::open_read_only(out.extract), "/", "neck_y_m");
+  const double neck_y_m =
+      hair::h5::read_double_attribute(hair::h5::File::open_read_only(out.extract), "/", "neck_y_m");
   // The share of strands whose tip hangs in the tail, and the longest jump between two
   // points of such a strand, in H.
   const auto tail_share = [&](const fs::path& path, double& longest_jump_h) {
@@ -200,9 +215,10 @@ TEST_F(GrowCli, ThePonytailsCapStrandsRunThroughTheBandIntoTheTail) {
   double jump_default_h = 0, jump_joined_h = 0;
   const double share_default = tail_share(out.strands, jump_default_h);
   const double share_joined = tail_share(joined, jump_joined_h);
-  std::printf("ponytail01: %.1f%% of %d strands end in the tail (%.1f%% joining the cards that "
-              "feed it); longest jump %.3f H (%.3f H)\n",
-              100 * share_default, kStrands, 100 * share_joined, jump_default_h, jump_joined_h);
+  std::printf(
+      "ponytail01: %.1f%% of %d strands end in the tail (%.1f%% joining the cards that "
+      "feed it); longest jump %.3f H (%.3f H)\n",
+      100 * share_default, kStrands, 100 * share_joined, jump_default_h, jump_joined_h);
   // The issue's target is 80%. The cards at the front of the crown (a tenth of the roots)
   // are read from the crown to the hairline (extract's continuation rule), so their
   // strands grow forward, away from the band; and by default the side cards' strands end
@@ -212,6 +228,51 @@ TEST_F(GrowCli, ThePonytailsCapStrandsRunThroughTheBandIntoTheTail) {
   EXPECT_GT(share_joined, share_default + 0.05);
   EXPECT_LE(jump_default_h, 0.1);
   EXPECT_LE(jump_joined_h, 0.1);
+}
+
+// bob01's front cards run into the forehead. Strands that followed them used to tremble
+// there, each step pushed back out of the body where it began: three fifths of the
+// segments grown along bob01's input strands, most across the painted flow (75% of the
+// grown segments along it, against 99% of extract's). They now end where the body stops
+// them: no trembling, and the grown strands follow the paint as the input strands do.
+TEST_F(GrowCli, Bob01sStrandsEndWhereItsFrontCardsDiveIntoTheForehead) {
+  const fs::path mesh = fs::path(HAIR_SHARED_DATA_DIR) / "makehuman" / "hair" / "bob01.obj";
+  if (!fs::exists(mesh)) GTEST_SKIP() << mesh << " not found";
+  const Outputs out = hair::test::run_sample_pipeline(directory() / "bob01", mesh, kStrands);
+  const hair::GrownStrands grown =
+      hair::read_grown_strands(hair::h5::File::open_read_only(out.strands));
+  expect_no_stalls(grown.strands,
+                   hair::h5::read_enum_dataset(hair::h5::File::open_read_only(out.strands),
+                                               "/strands/point_rule", hair::grow_rule_members()),
+                   grown.head_height_m);
+
+  // hair-grow-report's "grown along flow" column.
+  const fs::path report = kBin / "hair-grow-report";
+  const std::vector<std::string> header = text_lines(run_command(report, {"--header"}).out);
+  const auto row = run_command(report, {out.extract.string(), out.strands.string()});
+  ASSERT_EQ(row.exit_code, 0) << row.err;
+  const auto cells_of = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::string cell;
+    for (char c : line.substr(1)) {
+      if (c != '|') {
+        cell += c;
+        continue;
+      }
+      cells.push_back(cell.substr(cell.find_first_not_of(' '),
+                                  cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
+      cell.clear();
+    }
+    return cells;
+  };
+  ASSERT_FALSE(header.empty());
+  const std::vector<std::string> names = cells_of(header[0]),
+                                 values = cells_of(text_lines(row.out)[0]);
+  const auto column = std::find(names.begin(), names.end(), "grown along flow");
+  ASSERT_NE(column, names.end()) << header[0];
+  const std::string along = values.at(static_cast<size_t>(column - names.begin()));
+  std::printf("[ grow     ] bob01, %d strands: grown along flow %s\n", kStrands, along.c_str());
+  EXPECT_GE(std::stod(along), 85.0);  // the real-meshes issue's target; 74.8% before
 }
 
 TEST_F(GrowCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
@@ -288,8 +349,8 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
             std::count(header_lines[0].begin(), header_lines[0].end(), '|'));
 
   // --clusters: a table of the strands of every cluster, adding up to all the strands.
-  auto clusters = run_command(report, {braid.extract.string(), braid.strands.string(), "--name",
-                                       "braid01", "--clusters"});
+  auto clusters = run_command(
+      report, {braid.extract.string(), braid.strands.string(), "--name", "braid01", "--clusters"});
   EXPECT_EQ(clusters.exit_code, 0) << clusters.err;
   std::vector<std::string> cluster_lines = text_lines(clusters.out);
   const auto per_cluster = hair::h5::read_vector<int64_t>(
@@ -298,7 +359,8 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
   int64_t listed = 0;
   for (size_t c = 0; c < per_cluster.size(); ++c) {
     const std::string& line = cluster_lines[c + 2];
-    EXPECT_TRUE(line.starts_with("| " + std::to_string(c) + " | " + std::to_string(per_cluster[c]) + " | "))
+    EXPECT_TRUE(
+        line.starts_with("| " + std::to_string(c) + " | " + std::to_string(per_cluster[c]) + " | "))
         << line;
     listed += per_cluster[c];
   }
