@@ -51,11 +51,12 @@ struct GrowParams {
   /// ponytail's tail after its band; the lower part of some layered cuts), a strand whose
   /// card ends before it (cards stacked on a cap end anywhere) joins the nearest card that
   /// feeds it, running its way, within continue_radius_h and continue_max_angle_deg.
-  /// false: it ends where its card does. Off by default: on braid01 it sends 5,539
-  /// strands into the braid instead of 3,314, and with the style classifiers retrained
-  /// on strands grown with it (issue 26, docs/classify.md) the real meshes held out come
-  /// out worse (75.8% of strands against 80.1%: long01's long layer is called short).
-  bool join_continued_flow = false;
+  /// false: it ends where its card does. On by default since 2026-11-26: ponytail01's
+  /// strands ending in its tail go from 64.5% to 76.4%, synthetic tails' grown strands
+  /// come nearer their true length at no cost in distance, and with the style classifiers
+  /// retrained on strands grown with it the real meshes held out score as without it
+  /// (docs/grow.md, "Into the tail").
+  bool join_continued_flow = true;
   /// A strand following an input strand's group is lost (and looks for the next group)
   /// farther than this from the group's rails.
   double follow_radius_h = 0.08;

@@ -73,8 +73,8 @@ std::string obj_text(const SynthModel& model, double unit_scale, const std::stri
 }
 
 std::string mtl_text(const SynthModel& model, const std::string& image_file_name) {
-  std::string text = fmt::format("# hair-synth: preset {}, seed {}: the painted hair\n",
-                                 model.name, model.seed);
+  std::string text =
+      fmt::format("# hair-synth: preset {}, seed {}: the painted hair\n", model.name, model.seed);
   for (const MeshMaterial& material : model.mesh.materials)
     text += fmt::format("newmtl {}\nKd 1 1 1\nmap_Kd {}\nmap_d {}\n", material.name,
                         image_file_name, image_file_name);
@@ -127,6 +127,9 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
                      {"shuffled_share", d.shuffled_share},
                      {"scalp_lift_m", d.scalp_lift_m},
                      {"body_clearance_m", d.body_clearance_m},
+                     {"tucked_share", d.tucked_share},
+                     {"tuck_length_m", d.tuck_length_m},
+                     {"tuck_depth_m", d.tuck_depth_m},
                      {"painted_texture", d.painted_texture}};
   return json;
 }
@@ -177,13 +180,14 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
     for (size_t i = 0; i < json["components"].size(); ++i) {
       const nlohmann::json& item = json["components"][i];
       std::string where = fmt::format("components[{}].", i);
-      require_known_keys(
-          item, where,
-          {"kind", "stream_count", "length_min_m", "length_max_m", "wave_amplitude_m",
-           "wavelength_m", "strip_width_m", "azimuth_min_deg", "azimuth_max_deg", "polar_min_deg",
-           "polar_max_deg", "band_azimuth_deg", "band_polar_deg", "braid_width_m", "braid_depth_m",
-           "braid_period_m", "band_gap_m", "one_piece_rings", "bun_radius_m",
-           "ringlet_radius_m", "ringlet_pitch_m", "tube_sides"});
+      require_known_keys(item, where, {"kind",           "stream_count",     "length_min_m",
+                                       "length_max_m",   "wave_amplitude_m", "wavelength_m",
+                                       "strip_width_m",  "azimuth_min_deg",  "azimuth_max_deg",
+                                       "polar_min_deg",  "polar_max_deg",    "band_azimuth_deg",
+                                       "band_polar_deg", "braid_width_m",    "braid_depth_m",
+                                       "braid_period_m", "band_gap_m",       "one_piece_rings",
+                                       "bun_radius_m",   "ringlet_radius_m", "ringlet_pitch_m",
+                                       "tube_sides"});
       ComponentSpec c;
       std::string kind = "normal";
       read_key(item, where, "kind", kind);
@@ -227,11 +231,12 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
   if (json.contains("defects")) {
     const nlohmann::json& item = json["defects"];
     const std::string where = "defects.";
-    require_known_keys(item, where,
-                       {"rails_min", "rails_max", "cap_rails", "segment_length_m",
-                        "normal_pieces_max", "braid_piece_length_m", "gap_m", "overlap_share",
-                        "overlap_m", "jitter_m", "triangulate_share", "reversed_share",
-                        "shuffled_share", "scalp_lift_m", "body_clearance_m", "painted_texture"});
+    require_known_keys(
+        item, where,
+        {"rails_min", "rails_max", "cap_rails", "segment_length_m", "normal_pieces_max",
+         "braid_piece_length_m", "gap_m", "overlap_share", "overlap_m", "jitter_m",
+         "triangulate_share", "reversed_share", "shuffled_share", "scalp_lift_m",
+         "body_clearance_m", "tucked_share", "tuck_length_m", "tuck_depth_m", "painted_texture"});
     DefectSpec& d = spec.defects;
     read_key(item, where, "rails_min", d.rails_min);
     read_key(item, where, "rails_max", d.rails_max);
@@ -248,6 +253,9 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
     read_key(item, where, "shuffled_share", d.shuffled_share);
     read_key(item, where, "scalp_lift_m", d.scalp_lift_m);
     read_key(item, where, "body_clearance_m", d.body_clearance_m);
+    read_key(item, where, "tucked_share", d.tucked_share);
+    read_key(item, where, "tuck_length_m", d.tuck_length_m);
+    read_key(item, where, "tuck_depth_m", d.tuck_depth_m);
     read_key(item, where, "painted_texture", d.painted_texture);
   }
   check_spec(spec);
@@ -296,6 +304,9 @@ void check_spec(const HairStyleSpec& spec) {
   require_range("defects.shuffled_share", d.shuffled_share, 0, 1 - d.reversed_share);
   require_range("defects.scalp_lift_m", d.scalp_lift_m, 0, 0.05);
   require_range("defects.body_clearance_m", d.body_clearance_m, 0.001, 0.05);
+  require_range("defects.tucked_share", d.tucked_share, 0, 1);
+  require_range("defects.tuck_length_m", d.tuck_length_m, 0.002, 0.1);
+  require_range("defects.tuck_depth_m", d.tuck_depth_m, 0, 0.05);
 }
 
 void write_truth_file(h5::File& file, const SynthModel& model, double unit_scale,

@@ -133,7 +133,7 @@ struct Stream {
   HairStyle style = HairStyle::normal;
   int component = 0;
   bool trim_tips = true;  // true strands end at slightly different lengths
-  bool tube = false;       // meshed as tubes: the true strands fill the tube's round section
+  bool tube = false;      // meshed as tubes: the true strands fill the tube's round section
   /// Per point, for hair lying on the scalp (short caps): every point across the stream
   /// is put on the head surface at this lift (on_scalp); empty: a flat strip.
   std::vector<double> scalp_lift_m;
@@ -291,10 +291,10 @@ void add_ringlet(Stream& stream, const Head& head, double radius_m, double pitch
     double s = stream.along_m[i];
     double fade = std::min(1.0, s / 0.03);
     double turn = 2 * kPi * s / pitch_m + phase;
-    stream.points[i] = head.pushed_out(
-        stream.points[i] +
-            fade * radius_m * (std::cos(turn) * stream.across[i] + std::sin(turn) * stream.normal[i]),
-        clearance_m);
+    stream.points[i] = head.pushed_out(stream.points[i] + fade * radius_m *
+                                                              (std::cos(turn) * stream.across[i] +
+                                                               std::sin(turn) * stream.normal[i]),
+                                       clearance_m);
   }
   measure_arc_length(stream);
   frame_stream(stream, head);
@@ -547,8 +547,8 @@ std::pair<Vec3, Vec3> band_point(const Head& head, const ComponentSpec& componen
 /// earlier ones, kept `clearance_m` off the body. Streams leaving from all round the band
 /// fill a ring: a bun.
 std::vector<Vec3> bun_coil(const Head& head, const Vec3& band, const Vec3& band_out,
-                           const Vec3& side, const Vec3& up, double start_angle,
-                           double radius_m, double length_m, double clearance_m) {
+                           const Vec3& side, const Vec3& up, double start_angle, double radius_m,
+                           double length_m, double clearance_m) {
   constexpr double kStart_m = 0.006, kRisePerTurn_m = 0.01;
   std::vector<Vec3> points;
   double angle = start_angle, along = 0;
@@ -591,9 +591,9 @@ void add_ponytail(const ComponentSpec& component, int component_index, const Def
     double total = rng.uniform(component.length_min_m, component.length_max_m);
     double tail_length = std::max(0.05, total - cap_length);
     if (component.bun_radius_m > 0) {
-      append_points(stream.points, bun_coil(head, band, band_out, side, up, ring_angle,
-                                            component.bun_radius_m, tail_length,
-                                            defects.body_clearance_m));
+      append_points(stream.points,
+                    bun_coil(head, band, band_out, side, up, ring_angle, component.bun_radius_m,
+                             tail_length, defects.body_clearance_m));
     } else {
       Vec3 tail_start = (band_out + 0.4 * Vec3(0, -1, 0)).normalized();
       append_points(stream.points, grown_curve(head, cap_end, tail_start, tail_length, 0.05,
@@ -616,9 +616,8 @@ void add_ponytail(const ComponentSpec& component, int component_index, const Def
     const HairStyle tail_style = component.bun_radius_m > 0 ? HairStyle::fixed : HairStyle::normal;
     if (component.bun_radius_m > 0) stream.style = HairStyle::fixed;
     if (tail_begin < stream.length_m() - 2 * defects.segment_length_m) {
-      auto tail =
-          cut_pieces(tail_begin, stream.length_m(), rng.integer(1, defects.normal_pieces_max),
-                     tail_style, defects, rng);
+      auto tail = cut_pieces(tail_begin, stream.length_m(),
+                             rng.integer(1, defects.normal_pieces_max), tail_style, defects, rng);
       stream.pieces.insert(stream.pieces.end(), tail.begin(), tail.end());
     }
     streams.push_back(std::move(stream));
@@ -757,6 +756,12 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
       static_cast<int>(std::lround((piece.end_m - piece.start_m) / defects.segment_length_m)) + 1);
   int count = rows * columns;
   const std::vector<int32_t> id = draw_vertex_ids(rows, columns, defects, rng, patch);
+  // Drawn from a generator of its own, seeded by the patch's first vertex: a spec with
+  // tucked tips draws every other defect as the same spec without them.
+  Rng tuck_rng(static_cast<uint32_t>(vertex_along_m.size()) * 2654435761u ^ 0x7f4a7c15u);
+  patch.tucked = defects.tucked_share > 0 && !stream.scalp_lift_m.empty() &&
+                 piece.end_m >= stream.length_m() - 1e-9 && tuck_rng.chance(defects.tucked_share);
+  const double tuck_start_m = piece.end_m - defects.tuck_length_m;
 
   auto base = static_cast<int32_t>(vertex_along_m.size());
   patch.first_vertex = base;
@@ -772,7 +777,14 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
       double u = static_cast<double>(c) / (columns - 1) - 0.5;
       Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
       Vec3 p = centre + u * width * across;
-      if (!stream.scalp_lift_m.empty()) p = on_scalp(head, p, stream.scalp_lift_at(s));
+      if (!stream.scalp_lift_m.empty()) {
+        double lift_m = stream.scalp_lift_at(s);
+        if (patch.tucked && s > tuck_start_m) {
+          const double t = std::min(1.0, (s - tuck_start_m) / defects.tuck_length_m);
+          lift_m = (1 - t) * lift_m - t * defects.tuck_depth_m;
+        }
+        p = on_scalp(head, p, lift_m);
+      }
       p += defects.jitter_m * jitter;
       int32_t v = base + id[static_cast<size_t>(r * columns + c)];
       for (int k = 0; k < 3; ++k)
@@ -862,7 +874,8 @@ SynthPatch build_ring_patch(const std::vector<Stream>& streams,
   patch.rails = static_cast<int32_t>(stream_ids.size());
   const auto count = static_cast<int>(stream_ids.size());
   double longest = 0;
-  for (int32_t id : stream_ids) longest = std::max(longest, streams[static_cast<size_t>(id)].length_m());
+  for (int32_t id : stream_ids)
+    longest = std::max(longest, streams[static_cast<size_t>(id)].length_m());
   const int rows = static_cast<int>(std::floor(longest / defects.segment_length_m)) + 1;
   patch.end_m = longest;
   auto base = static_cast<int32_t>(vertex_along_m.size());
@@ -877,7 +890,8 @@ SynthPatch build_ring_patch(const std::vector<Stream>& streams,
       const double s = r * defects.segment_length_m;
       if (s > stream.length_m()) break;
       Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-      Vec3 p = on_scalp(head, stream.point_at(s), stream.scalp_lift_at(s)) + defects.jitter_m * jitter;
+      Vec3 p =
+          on_scalp(head, stream.point_at(s), stream.scalp_lift_at(s)) + defects.jitter_m * jitter;
       for (int c = 0; c < 3; ++c) positions.push_back(static_cast<float>(p[c]));
       vertex_along_m.push_back(static_cast<float>(s));
       id[static_cast<size_t>(k)].push_back(next++);
@@ -915,7 +929,8 @@ HairStyle style_at(const Stream& stream, double along_m) {
 
 /// Dense true strands of a stream: `count` strands at fixed places across the stream's
 /// width and thickness (a third of its width; on the scalp: from half to 1.5 times its
-/// lift; a tube: over its round section), following its centre; the style of every point is appended to `point_style`.
+/// lift; a tube: over its round section), following its centre; the style of every point is
+/// appended to `point_style`.
 void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head, int count,
                       Rng& rng, std::vector<Points3f>& polylines,
                       std::vector<int32_t>& strand_stream, std::vector<HairStyle>& point_style) {
@@ -950,8 +965,8 @@ void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head,
 }  // namespace
 
 const std::vector<std::string>& painted_preset_names() {
-  static const std::vector<std::string> names = {"ring_cap", "cap_over_layer", "mohawk",
-                                                 "low_tail", "face_locks", "bun", "ringlets"};
+  static const std::vector<std::string> names = {
+      "ring_cap", "cap_over_layer", "mohawk", "low_tail", "face_locks", "bun", "ringlets"};
   return names;
 }
 
@@ -1067,7 +1082,8 @@ HairStyleSpec painted_preset(const std::string& name) {
     ComponentSpec up_do;
     up_do.kind = Kind::ponytail;
     up_do.stream_count = 24;
-    up_do.polar_min_deg = 35;  // roots towards the hairline: the strips cover the scalp as they converge
+    up_do.polar_min_deg =
+        35;  // roots towards the hairline: the strips cover the scalp as they converge
     up_do.band_polar_deg = 60;
     up_do.length_min_m = 0.26;
     up_do.length_max_m = 0.32;

@@ -109,6 +109,13 @@ struct DefectSpec {
   /// the crown, rising to 1.5 times this at the hairline).
   double scalp_lift_m = 0.004;
   double body_clearance_m = 0.008;  ///< hair kept this far off the body
+  /// Share of the patches of hair lying on the scalp (short caps) whose tip end is tucked
+  /// into the head, as artists hide a card's end under the skin (bob01's front cards run
+  /// into the forehead): over its last tuck_length_m the patch dives from its lift to
+  /// tuck_depth_m under the scalp. The true strands still end on the scalp.
+  double tucked_share = 0.0;
+  double tuck_length_m = 0.012;
+  double tuck_depth_m = 0.008;
   /// The mesh carries a painted texture as artists' meshes do (synth_paint.h): strokes
   /// along v, which runs root to tip on every patch, and an alpha fading towards the tips.
   bool painted_texture = false;
@@ -125,8 +132,8 @@ struct HairStyleSpec {
 const std::vector<std::string>& preset_names();
 
 /// Presets of real meshes' kinds with painted textures (the real-meshes issue), in the
-/// training corpus with `corpus --painted`: "ring_cap" (a one-piece wig cap meshed in rings around the whorl,
-/// painted down from it), "cap_over_layer" (such a cap over a longer back layer of
+/// training corpus with `corpus --painted`: "ring_cap" (a one-piece wig cap meshed in rings around
+/// the whorl, painted down from it), "cap_over_layer" (such a cap over a longer back layer of
 /// strips), "mohawk" (spike cards along the middle of the head), "low_tail" (hair pulled
 /// back under a band low at the nape into a tail), "face_locks" (medium hair with two
 /// longer locks framing the face), "bun" (hair pulled up from the whole hairline to a
@@ -168,6 +175,7 @@ struct SynthPatch {
   HairStyle style = HairStyle::normal;
   VertexOrder order = VertexOrder::natural;
   bool triangulated = false;
+  bool tucked = false;  ///< its tip end dives into the head (DefectSpec::tucked_share)
   int32_t rails = 2;
   int64_t first_vertex = 0, vertex_count = 0;  ///< vertex ids [first, first + count)
   int64_t first_face = 0, face_count = 0;      ///< face ids [first, first + count)
