@@ -155,52 +155,70 @@ TEST_F(ClassifyCli, DrawsTheStylesInThePapersColours) {
 }
 
 TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
-  hair::h5::File file = hair::h5::File::open_read_only(styles(sample("ponytail01")));
-  const std::vector<int8_t> style = hair::read_cluster_styles(file);
-  const std::vector<int8_t> svm_style =
-      hair::h5::read_enum_dataset(file, "/clusters/svm_style", hair::style_members());
-  const hair::StyleCertainty certainty = hair::read_style_certainty(file);
-  const auto decision =
-      hair::h5::read_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values");
-  const std::vector<int8_t> classes =
-      hair::h5::read_enum_dataset(file, "/classes/style", hair::style_members());
-  EXPECT_DOUBLE_EQ(certainty.unsure_below, 0.6);
-  int ruled = 0, unsure = 0;
-  for (size_t c = 0; c < style.size(); ++c) {
-    SCOPED_TRACE("cluster " + std::to_string(c));
-    EXPECT_EQ(certainty.pinned[c], 0);
-    if (style[c] < 0) {
-      EXPECT_EQ(certainty.confidence[c], 0.0);
-      EXPECT_EQ(certainty.unsure[c], 0);
-      EXPECT_EQ(certainty.ruled[c], 0);
-      continue;
-    }
-    if (certainty.ruled[c]) {  // the paper's criteria decided: sure
-      ++ruled;
-      EXPECT_EQ(certainty.confidence[c], 1.0);
-      EXPECT_EQ(certainty.unsure[c], 0);
-      continue;
-    }
-    // The SVM's margin: the smallest decision value of the contests of the style it gave,
-    // signed for it (pairs i < j in order, > 0 for i), within [0, 1]; unsure below 0.6.
-    EXPECT_EQ(style[c], svm_style[c]);
-    const auto k = std::find(classes.begin(), classes.end(), style[c]) - classes.begin();
-    double margin = 1.0;
-    Eigen::Index pair = 0;
-    for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(classes.size()); ++i)
-      for (Eigen::Index j = i + 1; j < static_cast<Eigen::Index>(classes.size()); ++j, ++pair) {
-        const double value = decision(static_cast<Eigen::Index>(c), pair);
-        if (i == k) margin = std::min(margin, value);
-        if (j == k) margin = std::min(margin, -value);
+  const SampleOutputs ponytail = sample("ponytail01");
+  // The checks of one styles.h5 made with `unsure_below`; returns how many clusters the
+  // criteria decided and how many are unsure.
+  const auto check = [](const fs::path& path, double unsure_below) {
+    hair::h5::File file = hair::h5::File::open_read_only(path);
+    const std::vector<int8_t> style = hair::read_cluster_styles(file);
+    const std::vector<int8_t> svm_style =
+        hair::h5::read_enum_dataset(file, "/clusters/svm_style", hair::style_members());
+    const hair::StyleCertainty certainty = hair::read_style_certainty(file);
+    const auto decision =
+        hair::h5::read_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values");
+    const std::vector<int8_t> classes =
+        hair::h5::read_enum_dataset(file, "/classes/style", hair::style_members());
+    EXPECT_DOUBLE_EQ(certainty.unsure_below, unsure_below);
+    int ruled = 0, unsure = 0;
+    for (size_t c = 0; c < style.size(); ++c) {
+      SCOPED_TRACE("cluster " + std::to_string(c));
+      EXPECT_EQ(certainty.pinned[c], 0);
+      if (style[c] < 0) {
+        EXPECT_EQ(certainty.confidence[c], 0.0);
+        EXPECT_EQ(certainty.unsure[c], 0);
+        EXPECT_EQ(certainty.ruled[c], 0);
+        continue;
       }
-    EXPECT_DOUBLE_EQ(certainty.confidence[c], std::clamp(margin, 0.0, 1.0));
-    EXPECT_EQ(certainty.unsure[c], certainty.confidence[c] < 0.6 ? 1 : 0);
-    unsure += certainty.unsure[c];
-  }
-  // ponytail01's cap, gathered into the band, is decided by the fixed rule; its front-crown
-  // patch, whose strands grow forward and end on the head, is called short, unsure.
+      if (certainty.ruled[c]) {  // the paper's criteria decided: sure
+        ++ruled;
+        EXPECT_EQ(certainty.confidence[c], 1.0);
+        EXPECT_EQ(certainty.unsure[c], 0);
+        continue;
+      }
+      // The SVM's margin: the smallest decision value of the contests of the style it
+      // gave, signed for it (pairs i < j in order, > 0 for i), within [0, 1].
+      EXPECT_EQ(style[c], svm_style[c]);
+      const auto k = std::find(classes.begin(), classes.end(), style[c]) - classes.begin();
+      double margin = 1.0;
+      Eigen::Index pair = 0;
+      for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(classes.size()); ++i)
+        for (Eigen::Index j = i + 1; j < static_cast<Eigen::Index>(classes.size()); ++j, ++pair) {
+          const double value = decision(static_cast<Eigen::Index>(c), pair);
+          if (i == k) margin = std::min(margin, value);
+          if (j == k) margin = std::min(margin, -value);
+        }
+      EXPECT_DOUBLE_EQ(certainty.confidence[c], std::clamp(margin, 0.0, 1.0));
+      EXPECT_EQ(certainty.unsure[c], certainty.confidence[c] < unsure_below ? 1 : 0);
+      unsure += certainty.unsure[c];
+    }
+    return std::pair{ruled, unsure};
+  };
+  // By default (unsure below 0.6): ponytail01's cap, gathered into the band, and its side
+  // pieces are decided by the fixed rule; the classifier is sure of the rest (the front
+  // crown patch, fixed, has the smallest margin, about 0.9).
+  const auto [ruled, unsure] = check(styles(ponytail), 0.6);
   EXPECT_GE(ruled, 1);
-  EXPECT_GE(unsure, 1);
+  // Asked to be surer, the clusters of smaller margins are marked unsure, and the log
+  // lists them.
+  const fs::path strict = ponytail.strands.parent_path() / "styles_strict.h5";
+  std::vector<std::string> arguments = inputs(ponytail);
+  arguments.insert(arguments.end(), {"--unsure_below", "0.99", "-o", strict.string()});
+  auto run = run_command(kBin / "classify", arguments);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto [ruled_strict, unsure_strict] = check(strict, 0.99);
+  EXPECT_EQ(ruled_strict, ruled);
+  EXPECT_GE(unsure_strict, unsure + 1);
+  EXPECT_NE((run.out + run.err).find("unsure"), std::string::npos) << run.out << run.err;
 }
 
 TEST_F(ClassifyCli, APinnedClusterTakesTheUsersStyleAndTheFileSaysSo) {
