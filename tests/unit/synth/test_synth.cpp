@@ -404,6 +404,17 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   json = spec_json(preset("bun"));
   json["components"][0]["bun_radius_m"] = -0.01;
   EXPECT_THROW(spec_from_json(json), hair::Error);
+  // Tucked tips: a share, a length of at least 2 mm, a depth of at most 5 cm.
+  json = spec_json(preset("short_cap"));
+  EXPECT_EQ(json["defects"]["tucked_share"], 0.0);
+  json["defects"]["tucked_share"] = 0.5;
+  EXPECT_EQ(spec_from_json(json).defects.tucked_share, 0.5);
+  for (const auto& [key, value] : std::vector<std::pair<std::string, double>>{
+           {"tucked_share", 1.5}, {"tuck_length_m", 0.0}, {"tuck_depth_m", 0.2}}) {
+    json = spec_json(preset("short_cap"));
+    json["defects"][key] = value;
+    EXPECT_THROW(spec_from_json(json), hair::Error) << key;
+  }
 }
 
 TEST(SynthPresets, TheBunCoilsRoundItsBandAndTheRingletsWindRoundTheirAxis) {
