@@ -758,9 +758,10 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
   const std::vector<int32_t> id = draw_vertex_ids(rows, columns, defects, rng, patch);
   // Drawn from a generator of its own, seeded by the patch's first vertex: a spec with
   // tucked tips draws every other defect as the same spec without them.
-  Rng tuck_rng(static_cast<uint32_t>(vertex_along_m.size()) * 2654435761u ^ 0x7f4a7c15u);
   patch.tucked = defects.tucked_share > 0 && !stream.scalp_lift_m.empty() &&
-                 piece.end_m >= stream.length_m() - 1e-9 && tuck_rng.chance(defects.tucked_share);
+                 piece.end_m >= stream.length_m() - 1e-9 &&
+                 Rng(static_cast<uint32_t>(vertex_along_m.size()) * 2654435761u ^ 0x7f4a7c15u)
+                     .chance(defects.tucked_share);
   const double tuck_start_m = piece.end_m - defects.tuck_length_m;
 
   auto base = static_cast<int32_t>(vertex_along_m.size());
