@@ -501,28 +501,82 @@ void add_short_cap(const ComponentSpec& component, int component_index, const De
   }
 }
 
+/// How a cap's grids lie between their roots and the band: close over the head (the
+/// default), or loose hair drawn low over the ears with volume (ComponentSpec::cap_volume_m,
+/// cap_drape).
+struct CapShape {
+  double volume_m = 0;  ///< the grids stand up to this far off the head between root and band
+  bool drape = false;   ///< the grids fall down the side of the head before sweeping back
+};
+
+/// Where a draped cap grid from `root_dir` passes on its way to the band: the side of the
+/// head above the ear (polar 80 degrees), at the root's own azimuth, pushed at least 70
+/// degrees from the face so the hair is swept off it.
+Vec3 drape_direction(const Vec3& root_dir) {
+  Vec3 r = root_dir.normalized();
+  double azimuth_deg = std::atan2(r.x(), r.z()) * 180.0 / kPi;
+  double polar_deg = std::acos(std::clamp(r.y(), -1.0, 1.0)) * 180.0 / kPi;
+  double side = azimuth_deg < 0 ? -1.0 : 1.0;
+  double via_azimuth = std::abs(azimuth_deg) < 70.0 ? side * 70.0 : azimuth_deg;
+  return direction(via_azimuth, std::max(polar_deg, 80.0));
+}
+
+/// Unit directions from `from` to `to` (unit vectors) along the great circle, `steps` + 1 of
+/// them, both ends included.
+std::vector<Vec3> great_circle(const Vec3& from, const Vec3& to, int steps) {
+  double angle = std::acos(std::clamp(from.dot(to), -1.0, 1.0));
+  std::vector<Vec3> out;
+  for (int i = 0; i <= steps; ++i) {
+    double t = static_cast<double>(i) / steps;
+    out.push_back(std::abs(std::sin(angle)) < 1e-6
+                      ? from
+                      : Vec3((std::sin((1 - t) * angle) * from + std::sin(t * angle) * to) /
+                             std::sin(angle)));
+  }
+  return out;
+}
+
 /// A curve over the head from `root` to `band`: directions from the head centre
-/// interpolated on the sphere, each put on the surface, lifted from `lift_root_m` at the
-/// root to the band's own height at the end.
+/// interpolated on the sphere (through the side of the head when `shape.drape`), each put
+/// on the surface, lifted from `lift_root_m` at the root to the band's own height at the end
+/// and, with volume, up to `shape.volume_m` more in between (sin(pi t), t the share of the
+/// way: rising from the root, drawn in to the band at the end).
 std::vector<Vec3> cap_curve(const Head& head, const Vec3& root_dir, const Vec3& band_end,
-                            double lift_root_m, double clearance_m) {
+                            double lift_root_m, double clearance_m, const CapShape& shape = {}) {
   Vec3 band_dir = (band_end - head.centre).normalized();
-  double angle = std::acos(std::clamp(root_dir.normalized().dot(band_dir), -1.0, 1.0));
-  int steps = std::max(4, static_cast<int>(angle * head.radius_m / kStep_m));
+  Vec3 from = root_dir.normalized();
+  auto steps_for = [&](const Vec3& a, const Vec3& b) {
+    double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+    return std::max(4, static_cast<int>(angle * head.radius_m / kStep_m));
+  };
+  std::vector<Vec3> directions;
+  if (shape.drape) {
+    Vec3 via = drape_direction(from);
+    directions = great_circle(from, via, steps_for(from, via));
+    std::vector<Vec3> second = great_circle(via, band_dir, steps_for(via, band_dir));
+    directions.insert(directions.end(), second.begin() + 1, second.end());
+  } else {
+    directions = great_circle(from, band_dir, steps_for(from, band_dir));
+  }
+  // Where along the way each direction lies (0 at the root, 1 at the band), by angle.
+  std::vector<double> along(directions.size(), 0.0);
+  for (size_t i = 1; i < directions.size(); ++i)
+    along[i] =
+        along[i - 1] + std::acos(std::clamp(directions[i - 1].dot(directions[i]), -1.0, 1.0));
   std::vector<Vec3> points;
   auto [band_surface, band_outward] = head.surface(band_dir);
   double band_lift = (band_end - band_surface).norm();
-  for (int i = 0; i <= steps; ++i) {
-    double t = static_cast<double>(i) / steps;
-    Vec3 dir =
-        std::abs(std::sin(angle)) < 1e-6
-            ? root_dir
-            : (std::sin((1 - t) * angle) * root_dir.normalized() + std::sin(t * angle) * band_dir) /
-                  std::sin(angle);
-    auto [surface, outward] = head.surface(dir);
-    double lift = lift_root_m + (band_lift - lift_root_m) * t * t;
-    points.push_back(i == steps ? band_end
-                                : head.pushed_out(surface + lift * outward, clearance_m * 0.5));
+  const size_t last = directions.size() - 1;
+  for (size_t i = 0; i <= last; ++i) {
+    // Along one great circle the directions are evenly spaced: i / last exactly.
+    double t = !shape.drape       ? static_cast<double>(i) / static_cast<double>(last)
+               : along.back() > 0 ? along[i] / along.back()
+                                  : 1.0;
+    auto [surface, outward] = head.surface(directions[i]);
+    double lift = lift_root_m + (band_lift - lift_root_m) * t * t +
+                  shape.volume_m * std::max(0.0, std::sin(kPi * t));
+    points.push_back(i == last ? band_end
+                               : head.pushed_out(surface + lift * outward, clearance_m * 0.5));
   }
   return points;
 }
@@ -585,7 +639,8 @@ void add_ponytail(const ComponentSpec& component, int component_index, const Def
     stream.component = component_index;
     stream.style = HairStyle::fixed;
     stream.points =
-        cap_curve(head, directions[k], cap_end, defects.scalp_lift_m, defects.body_clearance_m);
+        cap_curve(head, directions[k], cap_end, defects.scalp_lift_m, defects.body_clearance_m,
+                  CapShape{component.cap_volume_m, component.cap_drape});
     measure_arc_length(stream);
     double cap_length = stream.length_m();
     double total = rng.uniform(component.length_min_m, component.length_max_m);
@@ -666,8 +721,9 @@ void add_braid(const ComponentSpec& component, int component_index, const Defect
     Stream stream;
     stream.component = component_index;
     stream.style = HairStyle::braided;
-    stream.points = cap_curve(head, root_dir, braid_points.front(), defects.scalp_lift_m,
-                              defects.body_clearance_m);
+    stream.points =
+        cap_curve(head, root_dir, braid_points.front(), defects.scalp_lift_m,
+                  defects.body_clearance_m, CapShape{component.cap_volume_m, component.cap_drape});
     size_t cap_points = stream.points.size();
     append_points(stream.points, braid_points);
     measure_arc_length(stream);
@@ -1289,6 +1345,20 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed, bool artists_famili
       component.length_min_m *= long_braid;
       component.length_max_m *= long_braid;
     }
+  }
+  // Half the tails and braids gathered from the whole head are loose hair drawn back low
+  // with volume (as braid01's cap): the band moved down to the nape, the cap's grids
+  // falling from their roots over the ears before they sweep back to it, standing 1.5-4.5
+  // cm off the head. Drawn after the families above so their draws stay as they were.
+  for (ComponentSpec& component : spec.components) {
+    bool gathered_from_whole_head =
+        (component.kind == ComponentSpec::Kind::braid ||
+         (component.kind == ComponentSpec::Kind::ponytail && component.bun_radius_m == 0)) &&
+        component.polar_max_deg >= 100.0;
+    if (!gathered_from_whole_head || !rng.chance(0.5)) continue;
+    component.band_polar_deg = rng.uniform(95.0, 110.0);
+    component.cap_volume_m = rng.uniform(0.015, 0.045);
+    component.cap_drape = true;
   }
   return spec;
 }

@@ -78,6 +78,13 @@ struct ComponentSpec {
   /// first 3 cm.
   double ringlet_radius_m = 0.0;
   double ringlet_pitch_m = 0.035;
+  /// Ponytail (no bun) and braid: loose hair drawn back with volume, as artists make low
+  /// braids and tails whose hair covers the ears (braid01's cap stands 2-4 cm off the head).
+  /// cap_volume_m: the cap's grids stand up to this far off the head between their roots and
+  /// the band. cap_drape: they fall from their roots down the side of the head to ear level,
+  /// swept off the face, before they turn back to the band.
+  double cap_volume_m = 0.0;
+  bool cap_drape = false;
   /// Above 0: each piece is meshed as a closed tube of this many sides round the stream's
   /// centre (its diameter the strip width), as artists model ringlets, not a flat strip.
   int tube_sides = 0;
@@ -147,7 +154,9 @@ HairStyleSpec preset(const std::string& name);
 /// `spec` with its knobs varied within plausible bounds by `seed` (the corpus). With
 /// `artists_families`, then drawn into families of artists' meshes that the presets alone
 /// miss (issue 26): a third of the short caps swept back from the forehead (as short04),
-/// half the braids hanging to the waist (as braid01's). The training corpus (corpus_plan
+/// half the braids hanging to the waist (as braid01's), half the tails and braids gathered
+/// from the whole head drawn back low and loose over the ears with volume (as braid01's
+/// cap: cap_volume_m, cap_drape). The training corpus (corpus_plan
 /// with_painted) draws them; without, the presets' varied models, and the tests measured
 /// on them, stay as they were.
 HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed, bool artists_families = false);

@@ -228,7 +228,7 @@ TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamili
   EXPECT_EQ(painted[11].preset, "ring_cap");  // after the eleven presets
   EXPECT_EQ(painted[17].preset, "ringlets");
   EXPECT_EQ(painted[18].preset, "long_straight");
-  int swept_back = 0, waist_long = 0, braids = 0, caps = 0;
+  int swept_back = 0, waist_long = 0, braids = 0, caps = 0, loose = 0, gathered = 0;
   for (size_t i = 0; i < painted.size(); ++i) {
     const CorpusEntry& entry = painted[i];
     HairStyleSpec varied = varied_spec(preset(entry.preset), entry.seed);
@@ -244,6 +244,18 @@ TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamili
           EXPECT_LE(drawn.band_polar_deg, 50.0);
         }
       }
+      if (drawn.cap_drape) {
+        ++loose;  // drawn back low and loose over the ears, with volume
+        EXPECT_GE(drawn.band_polar_deg, 95.0);
+        EXPECT_LE(drawn.band_polar_deg, 110.0);
+        EXPECT_GE(drawn.cap_volume_m, 0.015);
+        EXPECT_LE(drawn.cap_volume_m, 0.045);
+        EXPECT_EQ(drawn.bun_radius_m, 0.0);
+      }
+      if ((drawn.kind == ComponentSpec::Kind::braid ||
+           (drawn.kind == ComponentSpec::Kind::ponytail && drawn.bun_radius_m == 0)) &&
+          drawn.polar_max_deg >= 100)
+        ++gathered;
       if (drawn.kind == ComponentSpec::Kind::braid) {
         ++braids;
         double ratio = drawn.length_max_m / base.length_max_m;
@@ -261,12 +273,14 @@ TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamili
   EXPECT_EQ(plain[5].spec.defects.gap_m, painted[5].spec.defects.gap_m);
   std::printf(
       "[ synth    ] painted corpus of 90: %d of %d short caps swept back, %d of %d braids "
-      "waist-long\n",
-      swept_back, caps, waist_long, braids);
+      "waist-long, %d of %d tails and braids loose\n",
+      swept_back, caps, waist_long, braids, loose, gathered);
   EXPECT_GE(swept_back, 1);
   EXPECT_LT(swept_back, caps);
   EXPECT_GE(waist_long, 1);
   EXPECT_LT(waist_long, braids);
+  EXPECT_GE(loose, 1);
+  EXPECT_LT(loose, gathered);
 }
 
 /// Hair lying on the head (short_cap): one grid per stream, short and root-free, lying
@@ -404,6 +418,15 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   json = spec_json(preset("bun"));
   json["components"][0]["bun_radius_m"] = -0.01;
   EXPECT_THROW(spec_from_json(json), hair::Error);
+  // A loose cap: its volume round-trips and stays within 10 cm.
+  json = spec_json(preset("low_tail"));
+  EXPECT_EQ(json["components"][0]["cap_volume_m"], 0.0);
+  json["components"][0]["cap_volume_m"] = 0.03;
+  json["components"][0]["cap_drape"] = true;
+  EXPECT_EQ(spec_from_json(json).components[0].cap_volume_m, 0.03);
+  EXPECT_TRUE(spec_from_json(json).components[0].cap_drape);
+  json["components"][0]["cap_volume_m"] = 0.2;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
   // Tucked tips: a share, a length of at least 2 mm, a depth of at most 5 cm.
   json = spec_json(preset("short_cap"));
   EXPECT_EQ(json["defects"]["tucked_share"], 0.0);
@@ -477,6 +500,71 @@ TEST(SynthPresets, TheBunCoilsRoundItsBandAndTheRingletsWindRoundTheirAxis) {
     if (turned > 2 * M_PI) ++winding;
   }
   EXPECT_GE(winding, 15);
+}
+
+/// Measures of the cap (the fixed points) of a tail's true strands: the farthest any cap
+/// point lies from the body, and the share of the strands rooted on the front half of the
+/// head whose cap passes over the side of the head at ear level (|x| at least 0.8 head
+/// half-widths, below the roots) before it reaches the band at the nape.
+struct CapMeasures {
+  double farthest_off_body_m = 0;
+  double front_over_the_ears = 0;
+};
+
+CapMeasures measure_cap(const SynthModel& model, const TriangleMeshDistance& body,
+                        double head_half_width_m, double head_centre_z_m) {
+  CapMeasures measures;
+  int front = 0, over_ears = 0;
+  for (int64_t s = 0; s < model.strands.strand_count(); ++s) {
+    const int64_t first = model.strands.offsets[s], end = model.strands.offsets[s + 1];
+    const Eigen::Vector3f root = model.strands.points.row(first).transpose();
+    bool passes_ear = false;
+    for (int64_t p = first; p < end; ++p) {
+      if (model.strand_point_style[static_cast<size_t>(p)] != HairStyle::fixed) break;
+      const Eigen::Vector3d point = model.strands.points.row(p).cast<double>().transpose();
+      measures.farthest_off_body_m = std::max(measures.farthest_off_body_m, body.distance(point));
+      passes_ear |= std::abs(point.x()) >= 0.8 * head_half_width_m && point.y() < root.y() - 0.03;
+    }
+    if (root.z() > head_centre_z_m) {
+      ++front;
+      over_ears += passes_ear;
+    }
+  }
+  measures.front_over_the_ears = front > 0 ? static_cast<double>(over_ears) / front : 0;
+  return measures;
+}
+
+TEST(SynthPresets, ALooseLowTailsCapStandsOffTheHeadAndFallsOverTheEars) {
+  // The low tail as the preset draws it: a cap close over the head (at most 2.5 cm off the
+  // body where its grids gather into the band), straight back from the roots to the band.
+  // Loose (cap_volume_m 3 cm, cap_drape): the cap stands well off the head and the hair
+  // from the front falls over the ears before it sweeps back to the nape, as braid01's.
+  Triangles3i triangles = fan_triangulation(body_m().face_offsets, body_m().face_vertices);
+  TriangleMeshDistance body(body_m().vertices, triangles);
+  Eigen::Vector3f low = Eigen::Vector3f::Constant(1e9f), high = -low;
+  for (Eigen::Index v = 0; v < body_m().vertices.rows(); ++v) {
+    if (body_m().vertices(v, 1) < body_m().vertices.col(1).maxCoeff() - 0.12f) continue;
+    low = low.cwiseMin(body_m().vertices.row(v).transpose());
+    high = high.cwiseMax(body_m().vertices.row(v).transpose());
+  }
+  const double half_width_m = 0.5 * (high.x() - low.x()), centre_z_m = 0.5 * (low.z() + high.z());
+  HairStyleSpec close = preset("low_tail"), loose = close;
+  loose.components[0].cap_volume_m = 0.03;
+  loose.components[0].cap_drape = true;
+  const CapMeasures close_cap =
+      measure_cap(generate_model(close, body_m(), 3), body, half_width_m, centre_z_m);
+  const CapMeasures loose_cap =
+      measure_cap(generate_model(loose, body_m(), 3), body, half_width_m, centre_z_m);
+  std::printf(
+      "[ synth    ] low tail's cap: farthest %.3f m off the body close, %.3f m loose; front "
+      "strands over the ears %.2f close, %.2f loose\n",
+      close_cap.farthest_off_body_m, loose_cap.farthest_off_body_m, close_cap.front_over_the_ears,
+      loose_cap.front_over_the_ears);
+  EXPECT_LT(close_cap.farthest_off_body_m, 0.025);
+  EXPECT_GT(loose_cap.farthest_off_body_m, 0.035);
+  EXPECT_LT(loose_cap.farthest_off_body_m, 0.06);
+  EXPECT_LT(close_cap.front_over_the_ears, 0.2);
+  EXPECT_GT(loose_cap.front_over_the_ears, 0.8);
 }
 
 }  // namespace
