@@ -64,6 +64,11 @@ int main(int argc, char** argv) {
                    "(barycentric: all three, else clump; clump: from another cluster simulated "
                    "alike if its own has none among the candidates)",
                    hair::ParamRange::closed(0, 1));
+  app.params().add("wisp_bridge_length_m", params.wisp_bridge_length_m,
+                   "a strand bound to a braid's wisp is bridged from the head to its first "
+                   "bound point over at least this length, its last held points giving way "
+                   "(0: held right up to the braid)",
+                   hair::ParamRange::closed(0, 1));
 
   return app.run(argc, argv, [&] {
     hair::h5::File guides_file = hair::h5::File::open_read_only(guides_path);

@@ -129,6 +129,44 @@ TEST_F(InterpolateCli, AtRestTheStrandsAreTheGrownOnes) {
   }
 }
 
+TEST_F(InterpolateCli, Braid01sCapStrandsAreBridgedIntoTheBraidNotTorn) {
+  // braid01's cap strands run on into its braid: their cap points are held by the head,
+  // their braid points bound to the braid's wisp, which swings against the head in the
+  // shake. Between the root and the first bound point (held and bridged), no segment may
+  // stretch to 2.5 times its rest length in any frame (1.94 at worst; held right up to
+  // the braid, with the bridge's old lever arm, one segment there took the braid top's
+  // whole move: 12.6 times its rest length over the same half second).
+  Model m = model("braid01");
+  hair::h5::File file = hair::h5::File::open_read_only(m.frames);
+  hair::FramesFile frames = hair::read_frames_file(file);
+  auto bound_from = hair::h5::read_vector<int64_t>(file, "/strands/bound_from");
+  const auto& offsets = frames.rest.offsets;
+  int64_t into_the_braid = 0, torn = 0;
+  double worst = 0;
+  for (int64_t row = 0; row < frames.frame_count(); ++row) {
+    hair::Points3f points = hair::read_frame_points(file, row);
+    for (int64_t s = 0; s < frames.rest.strand_count(); ++s) {
+      const int64_t begin = offsets[static_cast<size_t>(s)];
+      const int64_t first_bound = begin + bound_from[static_cast<size_t>(s)];
+      if (first_bound >= offsets[static_cast<size_t>(s) + 1] || first_bound == begin) continue;
+      into_the_braid += row == 0;
+      double strand_worst = 0;
+      for (int64_t p = begin + 1; p <= first_bound; ++p)
+        strand_worst = std::max(
+            strand_worst,
+            (hair::point_of(points, p) - hair::point_of(points, p - 1)).norm() /
+                (hair::point_of(frames.rest.points, p) - hair::point_of(frames.rest.points, p - 1))
+                    .norm());
+      worst = std::max(worst, strand_worst);
+      torn += strand_worst > 2.5;
+    }
+  }
+  std::printf("braid01: %lld strands run into the braid; %lld torn strand-frames, worst %.2f\n",
+              static_cast<long long>(into_the_braid), static_cast<long long>(torn), worst);
+  EXPECT_GT(into_the_braid, 400);
+  EXPECT_EQ(torn, 0);
+}
+
 TEST_F(InterpolateCli, StrandsFollowTheirGuides) {
   Model m = model("ponytail01");
   hair::h5::File file = hair::h5::File::open_read_only(m.frames);
@@ -222,12 +260,12 @@ TEST_F(InterpolateCli, BlenderImportsEveryStrandPointAndFrame) {
                               {m.frames.string(), "--frames", "0:1", "--obj", folder.string()});
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   const fs::path source(HAIR_SOURCE_DIR);
-  auto result = run_command(
-      blender, {"-b", "--factory-startup", "--python-exit-code", "1", "--python",
-                (source / "tests" / "blender" / "check_import.py").string(), "--",
-                (source / "blender").string(), m.out.strands.string(), m.styles.string(),
-                m.out.extract.string(), m.frames.string(), (folder / "frame_0000.obj").string(),
-                m.guides.string()});
+  auto result =
+      run_command(blender, {"-b", "--factory-startup", "--python-exit-code", "1", "--python",
+                            (source / "tests" / "blender" / "check_import.py").string(), "--",
+                            (source / "blender").string(), m.out.strands.string(),
+                            m.styles.string(), m.out.extract.string(), m.frames.string(),
+                            (folder / "frame_0000.obj").string(), m.guides.string()});
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
   EXPECT_NE(result.out.find("check: all passed"), std::string::npos) << result.out << result.err;
   EXPECT_NE(result.out.find("Blender's OBJ importer keeps all"), std::string::npos) << result.out;
@@ -294,14 +332,15 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
   for (int64_t i = 0; i < 3 * points; ++i)
     ASSERT_EQ(static_cast<float>(sample[static_cast<size_t>(i)]), frame4.data()[i]) << i;
   // An animation layer without its groom layer is refused.
-  auto lone = run_command(kBin / "hair-export", {m.frames.string(), "--usda-animation",
-                                                 (folder / "lone.usda").string()});
+  auto lone = run_command(kBin / "hair-export",
+                          {m.frames.string(), "--usda-animation", (folder / "lone.usda").string()});
   EXPECT_EQ(lone.exit_code, 2);
   EXPECT_NE(lone.err.find("needs the groom layer"), std::string::npos) << lone.err;
   // ...and one over an existing groom layer names it.
-  auto over = run_command(kBin / "hair-export",
-                          {m.frames.string(), "--frames", "3:4", "--usda-animation",
-                           (folder / "over.usda").string(), "--over", (folder / "braid.usda").string()});
+  auto over =
+      run_command(kBin / "hair-export",
+                  {m.frames.string(), "--frames", "3:4", "--usda-animation",
+                   (folder / "over.usda").string(), "--over", (folder / "braid.usda").string()});
   ASSERT_EQ(over.exit_code, 0) << over.err;
   EXPECT_EQ(hair::test::parse_usda(read_file_bytes(folder / "over.usda")).metadata["subLayers"],
             "braid.usda");

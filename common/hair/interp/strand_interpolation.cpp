@@ -38,6 +38,9 @@ void check_params(const InterpolationParams& p) {
   if (!(p.min_guide_length_ratio >= 0 && p.min_guide_length_ratio <= 1))
     throw Error::usage("min_guide_length_ratio must be within [0, 1], not " +
                        std::to_string(p.min_guide_length_ratio));
+  if (!(p.wisp_bridge_length_m >= 0 && p.wisp_bridge_length_m <= 1))
+    throw Error::usage("wisp_bridge_length_m must be within [0, 1], not " +
+                       std::to_string(p.wisp_bridge_length_m));
 }
 
 /// Smallest height of triangle (a, b, c) over its longest edge.
@@ -64,11 +67,11 @@ Vec3 guide_rest_point(const InterpolationGuides& guides, int32_t g, double u) {
 /// The guides that strands can follow (strand guides, not wisp centres), their anchors
 /// in a k-d tree, their directions at rest, and every guide's rest length.
 struct FollowableGuides {
-  std::vector<int32_t> usable;        ///< guide indices
-  Points3f anchors;                   ///< per usable guide: its first particle
-  std::vector<Vec3> direction;        ///< per usable guide: anchor to tip at rest, unit
-  std::optional<PointIndex> index;    ///< of the anchors
-  std::vector<double> guide_length_m; ///< per guide: rest length from its anchor to its tip
+  std::vector<int32_t> usable;         ///< guide indices
+  Points3f anchors;                    ///< per usable guide: its first particle
+  std::vector<Vec3> direction;         ///< per usable guide: anchor to tip at rest, unit
+  std::optional<PointIndex> index;     ///< of the anchors
+  std::vector<double> guide_length_m;  ///< per guide: rest length from its anchor to its tip
 };
 
 FollowableGuides followable_guides(const InterpolationGuides& guides) {
@@ -143,6 +146,25 @@ void bind_wisp_points(const InterpolationGuides& guides, int64_t point_count,
   }
 }
 
+/// Where the bridge of strand `s` to its wisp starts: its first point not held. The held
+/// points (`held` from the root) give way from the end until the bridge, from the last
+/// point still held to the first bound one, spans `length_m` of arc; the root stays held.
+int64_t bridge_start(const StrandSet& strands, int64_t s, int64_t held, int64_t bound_from,
+                     double length_m) {
+  const int64_t begin = strands.offsets[static_cast<size_t>(s)];
+  int64_t start = std::min(held, bound_from);
+  if (start == 0) return 0;  // nothing held: bridged from the root
+  double arc = 0;            // from point start - 1 to bound_from
+  for (int64_t i = start; i <= bound_from; ++i)
+    arc += (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+  while (start > 1 && arc < length_m) {
+    --start;
+    arc += (point_of(strands.points, begin + start) - point_of(strands.points, begin + start - 1))
+               .norm();
+  }
+  return start;
+}
+
 /// The points of strand `s` between its held points and its wisp (a braided strand),
 /// bridged from the head (the last held point, or the root) to the wisp by arc length.
 void bridge_to_wisp(const StrandSet& strands, int64_t s, StrandBinding& binding) {
@@ -155,14 +177,11 @@ void bridge_to_wisp(const StrandSet& strands, int64_t s, StrandBinding& binding)
     arc[static_cast<size_t>(i - from)] =
         arc[static_cast<size_t>(i - from - 1)] +
         (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
-  const int32_t tetrahedron = binding.tetrahedron[static_cast<size_t>(begin + bound_from)];
   for (int64_t i = held; i < bound_from; ++i) {
     const auto row = static_cast<size_t>(begin + i);
     binding.parameter[row] =
-        arc.back() > 0 ? static_cast<float>(arc[static_cast<size_t>(i - from)] / arc.back())
-                       : 0.0f;
+        arc.back() > 0 ? static_cast<float>(arc[static_cast<size_t>(i - from)] / arc.back()) : 0.0f;
     binding.offset_m.row(begin + i) = strands.points.row(begin + i);
-    binding.tetrahedron[row] = tetrahedron;
   }
   binding.bridged[si] = 1;
   binding.method[si] = InterpolationMethod::braided;
@@ -284,7 +303,8 @@ GuideChoice clump_choice(const MovingStrand& strand, const InterpolationGuides& 
     for (size_t c = 0; c < nearest.size(); ++c) {
       const int32_t g = usable[static_cast<size_t>(nearest[c])];
       if (!admits(g)) continue;
-      if (candidate_offset_m[c] < 0) candidate_offset_m[c] = strand.mean_offset_m(guides, followable, g);
+      if (candidate_offset_m[c] < 0)
+        candidate_offset_m[c] = strand.mean_offset_m(guides, followable, g);
       if (candidate_offset_m[c] < best_offset) {
         best_offset = candidate_offset_m[c];
         found = nearest[c];
@@ -436,12 +456,18 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     for (int64_t i = 0; i < held; ++i)
       binding.offset_m.row(begin + i) = strands.points.row(begin + i);
 
-    if (held == bound_from) {
-      binding.method[si] = held == size ? InterpolationMethod::fixed : InterpolationMethod::braided;
+    if (bound_from < size && bound_from > 0) {
+      held = bridge_start(strands, s, held, bound_from, params.wisp_bridge_length_m);
+      binding.held_count[si] = held;
+      binding.interpolated_from[si] = held;
+      if (held < bound_from)
+        bridge_to_wisp(strands, s, binding);
+      else
+        binding.method[si] = InterpolationMethod::braided;  // no bridge asked for
       continue;
     }
-    if (bound_from < size) {
-      bridge_to_wisp(strands, s, binding);
+    if (held == bound_from) {
+      binding.method[si] = held == size ? InterpolationMethod::fixed : InterpolationMethod::braided;
       continue;
     }
     if (followable.usable.empty()) {  // nothing to follow: held by the head
@@ -461,8 +487,8 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     std::optional<GuideChoice> choice =
         barycentric_choice(moving, guides, followable, nearest, params);
     if (!choice)
-      choice = clump_choice(moving, guides, followable, nearest, style_of_point(begin + held),
-                            params);
+      choice =
+          clump_choice(moving, guides, followable, nearest, style_of_point(begin + held), params);
     follow(moving, s, *choice, guides, followable, binding);
   }
   find_runs(strands, binding);
@@ -553,8 +579,8 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
   Column* table = table_storage.data() +
                   (4 - reinterpret_cast<uintptr_t>(table_storage.data()) / sizeof(Column) % 4) % 4;
   guide_frame_table(binding, frame, table);
-  // Rigid frames in transform_points()'s layout: per wisp tetrahedron, where it is now,
-  // and the move from its rest (for bridged points); and the head.
+  // Rigid frames in transform_points()'s layout: per wisp tetrahedron, where it is now;
+  // and the head.
   auto put_frame = [](float* record, const Eigen::Vector3f& origin, const Eigen::Matrix3f& m) {
     for (int r = 0; r < 3; ++r) {
       record[r] = origin[r];
@@ -562,21 +588,13 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     }
   };
   const auto tetrahedron_count = static_cast<size_t>(binding.tetrahedron_count);
-  std::vector<float> tetrahedron_frames(tetrahedron_count * kFrameFloats),
-      bridge_frames(tetrahedron_count * kFrameFloats);
+  std::vector<float> tetrahedron_frames(tetrahedron_count * kFrameFloats);
   for (int64_t t = 0; t < binding.tetrahedron_count; ++t) {
     const float* in = frame.wisp_frames + 7 * t;
-    const float* rest = binding.wisp_rest_frames.data() + 7 * t;
     Eigen::Matrix3f m =
         Eigen::Quaternionf(in[3], in[4], in[5], in[6]).normalized().toRotationMatrix();
-    Eigen::Matrix3f m_rest =
-        Eigen::Quaternionf(rest[3], rest[4], rest[5], rest[6]).normalized().toRotationMatrix();
-    Eigen::Matrix3f delta = m * m_rest.transpose();
-    Eigen::Vector3f shift =
-        Eigen::Vector3f(in[0], in[1], in[2]) - delta * Eigen::Vector3f(rest[0], rest[1], rest[2]);
     put_frame(tetrahedron_frames.data() + t * kFrameFloats, Eigen::Vector3f(in[0], in[1], in[2]),
               m);
-    put_frame(bridge_frames.data() + t * kFrameFloats, shift, delta);
   }
   float head_frame[kFrameFloats] = {};
   put_frame(head_frame, frame.head.translation_m.cast<float>(),
@@ -594,20 +612,26 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     // Held: R p + t.
     transform_points(head_frame, nullptr, offset + 3 * begin, interpolated - begin,
                      out + 3 * begin);
-    // Bridged: (1 - s) (R p + t) + s (D p + c) for the tetrahedron's D, c.
+    // Bound: origin + R_tet local.
+    transform_points(tetrahedron_frames.data(), binding.tetrahedron.data() + bound,
+                     offset + 3 * bound, end - bound, out + 3 * bound);
+    // Bridged: R p + t + s (x_b - (R b + t)), b the first bound point at rest and x_b where
+    // its tetrahedron carries it: the head's motion plus a share of how far the wisp's top
+    // moved from where the head would have carried it (no lever arm from the tetrahedron).
     if (binding.bridged[si]) {
+      const float* h = head_frame;
+      float junction_move[3];
+      for (int r = 0; r < 3; ++r) {
+        const float b = h[4 + r] * strands.points(bound, 0) + h[8 + r] * strands.points(bound, 1) +
+                        h[12 + r] * strands.points(bound, 2) + h[r];
+        junction_move[r] = out[3 * bound + r] - b;
+      }
       for (int64_t row = interpolated; row < bound; ++row) {
         const float share = binding.parameter[static_cast<size_t>(row)];
         const float* p = offset + 3 * row;
-        const float* h = head_frame;
-        const float* t =
-            bridge_frames.data() +
-            static_cast<size_t>(binding.tetrahedron[static_cast<size_t>(row)]) * kFrameFloats;
-        for (int r = 0; r < 3; ++r) {
-          float with_head = h[4 + r] * p[0] + h[8 + r] * p[1] + h[12 + r] * p[2] + h[r];
-          float with_wisp = t[r] + t[4 + r] * p[0] + t[8 + r] * p[1] + t[12 + r] * p[2];
-          out[3 * row + r] = (1 - share) * with_head + share * with_wisp;
-        }
+        for (int r = 0; r < 3; ++r)
+          out[3 * row + r] = h[4 + r] * p[0] + h[8 + r] * p[1] + h[12 + r] * p[2] + h[r] +
+                             share * junction_move[r];
       }
     } else if (interpolated < bound) {
       // Interpolated: sum_g w_g (G_g(u) + F_g(u) d), in runs where the strand has them.
@@ -630,9 +654,6 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
                                   offset + 3 * interpolated, bound - interpolated,
                                   out + 3 * interpolated);
     }
-    // Bound: origin + R_tet local.
-    transform_points(tetrahedron_frames.data(), binding.tetrahedron.data() + bound,
-                     offset + 3 * bound, end - bound, out + 3 * bound);
   }
 }
 

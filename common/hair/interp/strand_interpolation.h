@@ -46,6 +46,12 @@ struct InterpolationParams {
   /// length. A strand on a much shorter guide carries offsets tens of centimetres long
   /// that turn with the guide's tip.
   double min_guide_length_ratio = 0.5;
+  /// A strand bound to a wisp (a braid) is bridged from the head to its first bound point
+  /// over at least this much of its length: where its held points (a cap feeding the
+  /// braid) run right up to the braid, their last stretch is bridged instead of held, so
+  /// the braid's top moving against the head spreads over it rather than tearing one
+  /// segment (docs/interpolate.md).
+  double wisp_bridge_length_m = 0.06;
 };
 
 /// The simulated guides as interpolation reads them (guides.h5).
@@ -96,7 +102,7 @@ struct StrandBinding {
   std::vector<int64_t> interpolated_from;
   /// Per strand: 1 where the points between held_count and bound_from are bridged from the
   /// head to the wisp (a braided strand): parameter is the share of the way along the
-  /// bridge, offset_m the rest position, tetrahedron the first bound point's.
+  /// bridge, offset_m the rest position.
   std::vector<int8_t> bridged;
   /// The interpolated points in runs (interpolation_kernel.h's strand_runs(), computed
   /// once here so that a frame does not search for them): per strand its first run
@@ -131,8 +137,10 @@ StrandGuides strand_guides(const StrandBinding& binding, int64_t strand);
 /// rest shape lies closest to the strand's (least mean distance at equal arc parameter;
 /// clump), else the nearest guide of the cluster, else the nearest guide. A strand with points to
 /// interpolate and no guide at all is held. A strand bound to a wisp follows no guide: its points
-/// between its held ones (or its root) and its first bound point are bridged, blended by arc length
-/// from moving with the head to moving with that point's tetrahedron (method braided).
+/// between its held ones (or its root) and its first bound point are bridged, over at least
+/// params.wisp_bridge_length_m (held points giving way, the root excepted): they move with the
+/// head plus, by their share of the arc, the first bound point's move away from where the head
+/// would carry it (method braided).
 /// Deterministic. Throws Error::usage for parameters out of range and Error::runtime for
 /// guides or bindings that do not fit the strands.
 StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,

@@ -425,6 +425,99 @@ TEST(StrandInterpolation, BraidedPointsFollowTheirTetrahedra) {
             1e-6);
 }
 
+/// The largest ratio of a segment's length in `points` to its rest length, over strand `s`.
+double largest_stretch(const Scene& scene, const std::vector<float>& points, int64_t s) {
+  double largest = 0;
+  for (int64_t row = scene.strands.offsets[static_cast<size_t>(s)] + 1;
+       row < scene.strands.offsets[static_cast<size_t>(s) + 1]; ++row)
+    largest = std::max(
+        largest,
+        (row_of(points, row) - row_of(points, row - 1)).norm() /
+            (point_of(scene.strands.points, row) - point_of(scene.strands.points, row - 1)).norm());
+  return largest;
+}
+
+TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
+  // A strand over the cap (20 points 5 mm apart, fixed) that runs on into a braid (6 points
+  // bound to a third wisp tetrahedron), as grow makes of a cap feeding a braid. The
+  // braid's top then swings: the tetrahedron turns 0.5 rad about Z and moves 3 cm, the
+  // head still. Held right up to the braid (wisp_bridge_length_m 0), the segment across
+  // the junction tears; bridged over the last 6 cm of the cap, the move spreads over it.
+  Scene scene = make_scene();
+  std::vector<Vec3> points;
+  std::vector<int32_t> clusters;
+  for (int i = 0; i < 20; ++i) {
+    points.push_back(Vec3(0.4 - 0.005 * (19 - i), 0.01, 0.05));
+    clusters.push_back(kCap);
+  }
+  for (int k = 1; k <= 6; ++k) {
+    points.push_back(Vec3(0.4, 0.01 - 0.005 * k, 0.05));
+    clusters.push_back(kBraid);
+  }
+  Points3f block(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t i = 0; i < points.size(); ++i)
+    block.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
+  scene.strands.append_strand(block);
+  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
+  point_cluster.insert(point_cluster.end(), clusters.begin(), clusters.end());
+  const int64_t s = scene.strands.strand_count() - 1, begin = scene.strands.offsets[s];
+  const Vec3 origin(0.4, -0.01, 0.05);
+  scene.wisp_rest.insert(scene.wisp_rest.end(),
+                         {static_cast<float>(origin.x()), static_cast<float>(origin.y()),
+                          static_cast<float>(origin.z()), 1, 0, 0, 0});
+  scene.guides.wisp_rest_frames = scene.wisp_rest;
+  scene.guides.wisp_tetrahedron_offsets = {0, 3};
+  for (int i = 20; i < 26; ++i) {
+    scene.guides.binding_point.push_back(begin + i);
+    scene.guides.binding_wisp.push_back(0);
+    scene.guides.binding_tetrahedron.push_back(2);
+    scene.guides.binding_local_m.push_back((points[static_cast<size_t>(i)] - origin).cast<float>());
+  }
+  std::vector<float> wisp = scene.wisp_rest;
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
+  wisp[16] -= 0.03f;
+  wisp[17] = static_cast<float>(turn.w());
+  wisp[18] = static_cast<float>(turn.x());
+  wisp[19] = static_cast<float>(turn.y());
+  wisp[20] = static_cast<float>(turn.z());
+  const std::vector<float> guide_points =
+      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
+
+  InterpolationParams held_up_to_the_braid;
+  held_up_to_the_braid.wisp_bridge_length_m = 0;
+  StrandBinding binding = bind_strands(scene.strands, scene.guides, held_up_to_the_braid);
+  EXPECT_EQ(binding.held_count[static_cast<size_t>(s)], 20);
+  EXPECT_EQ(binding.bound_from[static_cast<size_t>(s)], 20);
+  std::vector<float> torn;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, torn);
+  const double torn_stretch = largest_stretch(scene, torn, s);
+
+  binding = bind_strands(scene.strands, scene.guides, {});  // the default: 6 cm
+  EXPECT_EQ(binding.method[static_cast<size_t>(s)], InterpolationMethod::braided);
+  EXPECT_EQ(binding.bridged[static_cast<size_t>(s)], 1);
+  // Held up to the first point that leaves at least 6 cm of bridge to the braid.
+  const int64_t held = binding.held_count[static_cast<size_t>(s)];
+  const double bridge_m = 0.005 * static_cast<double>(20 - (held - 1));
+  EXPECT_GE(bridge_m, InterpolationParams{}.wisp_bridge_length_m - 1e-6);
+  EXPECT_LT(bridge_m - 0.005, InterpolationParams{}.wisp_bridge_length_m);
+  std::vector<float> bridged;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, bridged);
+  const double bridged_stretch = largest_stretch(scene, bridged, s);
+  std::printf("[ interp   ] cap into a braid: largest stretch %.2f held up to it, %.2f bridged\n",
+              torn_stretch, bridged_stretch);
+  EXPECT_GT(torn_stretch, 3.0);
+  EXPECT_LT(bridged_stretch, 1.5);
+  // The cap's first points stay with the head, the braid's with its tetrahedron.
+  for (int64_t i = 0; i < held; ++i)
+    EXPECT_LT((row_of(bridged, begin + i) - points[static_cast<size_t>(i)]).norm(), 1e-6);
+  const Vec3 moved_origin = origin - Vec3(0, 0, 0.03);
+  for (int i = 20; i < 26; ++i)
+    EXPECT_LT((row_of(bridged, begin + i) -
+               (moved_origin + turn * (points[static_cast<size_t>(i)] - origin)))
+                  .norm(),
+              1e-5);
+}
+
 TEST(StrandInterpolation, TheSameWhateverTheThreadCount) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
