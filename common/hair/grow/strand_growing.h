@@ -52,12 +52,11 @@ struct GrowParams {
   /// card ends before it (cards stacked on a cap end anywhere) joins the nearest card that
   /// feeds it, running its way, within continue_radius_h and continue_max_angle_deg.
   /// false: it ends where its card does. Off by default: ponytail01's strands ending in
-  /// its tail go from 64.5% to 76.4% with it, synthetic tails' grown strands come nearer
-  /// their true length, and the style classifiers retrained with it hold the real meshes
-  /// held out (82.8% of strands against 83.1%); but interpolate binds the braid part of a
-  /// cap strand that runs on into a braid so that it tears from the cap part in motion, and
-  /// with it braid01 has 2,513 such strands at frame 30 of the shake against 215
-  /// (docs/grow.md, "Into the tail").
+  /// its tail go from 64.5% to 76.4% with it and synthetic tails' grown strands come nearer
+  /// their true length, but the style classifiers retrained with it do worse on the real
+  /// meshes held out (82.4% of strands against 85.4%: braid01's cap is lost), and
+  /// interpolate must bridge the cap strands it sends into a braid (it does:
+  /// InterpolationParams::wisp_bridge_length_m). docs/grow.md, "Into the tail".
   bool join_continued_flow = false;
   /// A strand following an input strand's group is lost (and looks for the next group)
   /// farther than this from the group's rails.

@@ -1346,7 +1346,7 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed, bool artists_famili
       component.length_max_m *= long_braid;
     }
   }
-  // A third of the tails and braids gathered from the whole head are loose hair drawn back low
+  // Half the tails and braids gathered from the whole head are loose hair drawn back low
   // with volume (as braid01's cap): the band moved down to the nape, the cap's grids
   // falling from their roots over the ears before they sweep back to it, standing 1.5-4.5
   // cm off the head. Drawn after the families above so their draws stay as they were.
@@ -1355,7 +1355,7 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed, bool artists_famili
         (component.kind == ComponentSpec::Kind::braid ||
          (component.kind == ComponentSpec::Kind::ponytail && component.bun_radius_m == 0)) &&
         component.polar_max_deg >= 100.0;
-    if (!gathered_from_whole_head || !rng.chance(1.0 / 3.0)) continue;
+    if (!gathered_from_whole_head || !rng.chance(0.5)) continue;
     component.band_polar_deg = rng.uniform(95.0, 110.0);
     component.cap_volume_m = rng.uniform(0.015, 0.045);
     component.cap_drape = true;

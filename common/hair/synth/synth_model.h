@@ -154,7 +154,7 @@ HairStyleSpec preset(const std::string& name);
 /// `spec` with its knobs varied within plausible bounds by `seed` (the corpus). With
 /// `artists_families`, then drawn into families of artists' meshes that the presets alone
 /// miss (issue 26): a third of the short caps swept back from the forehead (as short04),
-/// half the braids hanging to the waist (as braid01's), a third of the tails and braids gathered
+/// half the braids hanging to the waist (as braid01's), half the tails and braids gathered
 /// from the whole head drawn back low and loose over the ears with volume (as braid01's
 /// cap: cap_volume_m, cap_drape). The training corpus (corpus_plan
 /// with_painted) draws them; without, the presets' varied models, and the tests measured
