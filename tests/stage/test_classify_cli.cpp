@@ -204,13 +204,13 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
     return std::pair{ruled, unsure};
   };
   // By default (unsure below 0.6): ponytail01's cap, gathered into the band, is decided by
-  // the fixed rule; its front-crown patch, whose strands grow forward and end on the head,
-  // is called short, unsure.
+  // the fixed rule; every cluster's flag follows its confidence.
   const auto [ruled, unsure] = check(styles(ponytail), 0.6);
   EXPECT_GE(ruled, 1);
-  EXPECT_GE(unsure, 1);
   // Asked to be surer, no cluster becomes surer, the same ones are decided by the
-  // criteria, and the log lists the unsure ones.
+  // criteria, and the log lists the unsure ones: at least the front-crown patch, whose
+  // strands grow forward and end on the head (fixed at 0.66 by the shipped model; short
+  // at 0.07-0.22 by earlier ones).
   const fs::path strict = ponytail.strands.parent_path() / "styles_strict.h5";
   std::vector<std::string> arguments = inputs(ponytail);
   arguments.insert(arguments.end(), {"--unsure_below", "0.99", "-o", strict.string()});
@@ -219,6 +219,7 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
   const auto [ruled_strict, unsure_strict] = check(strict, 0.99);
   EXPECT_EQ(ruled_strict, ruled);
   EXPECT_GE(unsure_strict, unsure);
+  EXPECT_GE(unsure_strict, 1);
   EXPECT_NE((run.out + run.err).find("unsure"), std::string::npos) << run.out << run.err;
 }
 

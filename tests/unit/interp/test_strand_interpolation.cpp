@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 
 #include "hair/core/error.h"
@@ -544,6 +545,11 @@ TEST(StrandInterpolation, RefusesParametersOutOfRange) {
   EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
   params = {};
   params.min_guide_length_ratio = 1.5;
+  EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
+  params = {};
+  params.wisp_bridge_length_m = -0.01;
+  EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
+  params.wisp_bridge_length_m = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
 }
 
