@@ -118,8 +118,7 @@ StrandBinding empty_binding(int64_t strand_count, int64_t point_count,
   binding.guide_rest_points = guides.rest_points;
   binding.tetrahedron_count = guides.wisp_tetrahedron_offsets.back();
   binding.bridged.assign(static_cast<size_t>(strand_count), 0);
-  binding.wisp_rest_frames = guides.wisp_rest_frames;
-  if (static_cast<int64_t>(binding.wisp_rest_frames.size()) != 7 * binding.tetrahedron_count)
+  if (static_cast<int64_t>(guides.wisp_rest_frames.size()) != 7 * binding.tetrahedron_count)
     throw Error::runtime("guides", "the wisps' rest frames are not 7 values per tetrahedron");
   return binding;
 }

@@ -113,9 +113,8 @@ struct StrandBinding {
   std::vector<std::array<int32_t, 3>> run_particles;
   std::vector<uint8_t> run_of_point;
   int64_t tetrahedron_count = 0;
-  std::vector<float> wisp_rest_frames;  ///< #tetrahedra x 7
-  std::vector<int64_t> guide_offsets;   ///< the guides' CSR offsets
-  Points3f guide_rest_points;           ///< the guides at rest (their segments' rest directions)
+  std::vector<int64_t> guide_offsets;  ///< the guides' CSR offsets
+  Points3f guide_rest_points;          ///< the guides at rest (their segments' rest directions)
 };
 
 /// A strand's used guides (binding.guides without the -1), their segment counts and weights.
