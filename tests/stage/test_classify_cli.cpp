@@ -24,6 +24,8 @@
 #include "hair/style/hair_style.h"
 #include "hair/style/style_io.h"
 #include "hair/style/style_training.h"
+#include "hair/synth/synth_io.h"
+#include "hair/synth/synth_model.h"
 #include "stage/clean_failures.h"
 #include "stage/sample_pipeline.h"
 #include "support/run_command.h"
@@ -431,6 +433,34 @@ TEST_F(ClassifyCli, ThePaintedPresetsGetTheStylesTheirTruthSays) {
       EXPECT_GE(share, 0.8) << expectation.preset << ": " << hair::hair_style_name(style);
     }
   }
+}
+
+TEST_F(ClassifyCli, ALooseLowTailsCapIsFixed) {
+  // hair-synth's loose, low, full tail (cap_volume_m 3 cm, cap_drape: the family drawn into
+  // the training corpus for braid01's cap) at a seed the shipped model was not trained on:
+  // the cap stands off the head, falls over the ears and is still hair gathered into a
+  // band, fixed, on at least 80% of its strands (100% at this seed; 96-100% at seeds
+  // 7101-7104). Its thin tail is not asked: grow ends most cap strands at the band.
+  const fs::path data = directory() / "loose";
+  fs::create_directories(data);
+  hair::synth::HairStyleSpec spec = hair::synth::varied_spec(hair::synth::preset("low_tail"), 7101);
+  spec.components[0].cap_volume_m = 0.03;
+  spec.components[0].cap_drape = true;
+  spec.components[0].band_polar_deg = 100;
+  hair::test::write_text_file(data / "spec.json", hair::synth::spec_json(spec).dump(2));
+  auto synth =
+      run_command(kBin / "hair-synth", {"--spec", (data / "spec.json").string(), "--seed", "7101",
+                                        "--name", "loose_low_tail", "-o", data.string(), "--body",
+                                        (kSamples / "body.obj").string(), "--reproducible"});
+  ASSERT_EQ(synth.exit_code, 0) << synth.err;
+  SampleOutputs out = hair::test::run_sample_pipeline(directory() / "loose_low_tail",
+                                                      data / "loose_low_tail.obj", 10000);
+  StrandsByTruth found = strands_by_truth(out, data / "loose_low_tail.truth.h5", styles(out));
+  const double share = found.share_right(static_cast<int>(hair::HairStyle::fixed));
+  std::printf("[ loose    ] low_tail, loose: fixed clusters %.1f%% right (%lld strands)\n",
+              100 * share,
+              static_cast<long long>(found.strands[static_cast<int>(hair::HairStyle::fixed)]));
+  EXPECT_GE(share, 0.8);
 }
 
 TEST_F(ClassifyCli, WrongInputsFailCleanly) {
