@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
   p.add("continued_root_max_angle_deg", params.continued_root_max_angle_deg,
         "...turning by up to this angle (hair turns where a band gathers it)",
         hair::ParamRange::closed(0, 180));
+  p.add("continued_tip_off_scalp_h", params.continued_tip_off_scalp_h,
+        "...and so is any strand of such a cluster whose tip hangs farther than this from the "
+        "scalp (a tail or braid after its band), by a strand leaving its root's cluster, in H",
+        hair::ParamRange::above(0));
   p.add("join_continued_flow", params.join_continued_flow,
         "where the hair continues into a cluster that does not start at the root (a tail after "
         "its band), a strand whose card ends before it joins the nearest card running its way "

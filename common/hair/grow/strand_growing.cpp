@@ -140,6 +140,28 @@ class GrowingContext {
       }
     }
 
+    // Strands whose tip hangs off the scalp: farther than continued_tip_off_scalp_h from
+    // the centre of every scalp triangle (next_entry()).
+    hangs_off_scalp_.assign(static_cast<size_t>(strand_count), 0);
+    std::vector<Eigen::Index> scalp_rows;
+    for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t)
+      if (input.scalp_triangle[static_cast<size_t>(t)]) scalp_rows.push_back(t);
+    if (!scalp_rows.empty()) {
+      Points3f centres(static_cast<Eigen::Index>(scalp_rows.size()), 3);
+      for (size_t i = 0; i < scalp_rows.size(); ++i) {
+        Eigen::RowVector3f centre = Eigen::RowVector3f::Zero();
+        for (int k = 0; k < 3; ++k)
+          centre += input.body_vertices.row(input.body_triangles(scalp_rows[i], k));
+        centres.row(static_cast<Eigen::Index>(i)) = centre / 3;
+      }
+      const PointIndex scalp_index(centres);
+      const auto off_m = static_cast<float>(params.continued_tip_off_scalp_h * h_);
+      for (int64_t s = 0; s < strand_count; ++s)
+        hangs_off_scalp_[static_cast<size_t>(s)] =
+            scalp_index.within(strands.points.row(strands.offsets[s + 1] - 1).transpose(), off_m)
+                .empty();
+    }
+
     // Heights above the body, for layers.
     if (params.layer_radius_h > 0) {
       body_distance_ =
@@ -301,13 +323,24 @@ class GrowingContext {
     double min_cos = std::cos(params_.continue_max_angle_deg * std::numbers::pi / 180);
     double min_cos_continued =
         std::cos(params_.continued_root_max_angle_deg * std::numbers::pi / 180);
+    const bool leaving_roots = cluster_starts_at_root(preferred_cluster);
     std::optional<StrandEntry> best_same, best_other;
     double score_same = std::numeric_limits<double>::infinity(), score_other = score_same;
     for (int32_t e : entry_index_->within(point.cast<float>(), static_cast<float>(search_m))) {
       const StrandEntry& entry = entries_[static_cast<size_t>(e)];
       // Beyond continue_radius_h, and turning by more than continue_max_angle_deg, only
-      // into the start of a group that continues another (a tail after its band).
-      const bool into_continuation = !entry.backward && continues_another(entry.strand);
+      // into the start of a group that continues another (root-type, in a cluster that
+      // does not start at the root: a tail after its band); or, leaving a cluster that
+      // starts at the root (once: not from piece to piece of what follows), into the start
+      // of any strand of a cluster that does not and that hangs off the scalp
+      // (continued_tip_off_scalp_h): a tail or braid after its band. One that ends over the
+      // scalp lies on the hair there (a cap card read from its band end and typed as
+      // continuing the cards beside it, spikes stacked on a cap), and a strand sent into it
+      // would run back over the head or across the cap.
+      const bool into_continuation =
+          !entry.backward && !cluster_starts_at_root(cluster_of_strand(entry.strand)) &&
+          (continues_another(entry.strand) ||
+           (leaving_roots && hangs_off_scalp_[static_cast<size_t>(entry.strand)]));
       double reach_m = into_continuation ? search_m : radius_m;
       if ((point_of(strands.points, entry.backward ? strands.offsets[entry.strand + 1] - 1
                                                    : strands.offsets[entry.strand]) -
@@ -393,6 +426,8 @@ class GrowingContext {
   std::unique_ptr<PointIndex> root_index_;
   std::vector<int32_t> point_strand_;
   std::vector<StrandEntry> entries_;
+  std::vector<uint8_t>
+      hangs_off_scalp_;  ///< per input strand: its tip off the scalp (next_entry())
   std::unique_ptr<PointIndex> entry_index_;
   std::unique_ptr<PointIndex> all_index_;          ///< every input point, by row
   std::vector<uint8_t> group_feeds_continuation_;  ///< per group

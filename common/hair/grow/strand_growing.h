@@ -47,6 +47,11 @@ struct GrowParams {
   /// strands from the sides of the head most (about a right angle on ponytail01, whose side
   /// strands run back level and its tail hangs down).
   double continued_root_max_angle_deg = 120;
+  /// Leaving the cluster it is rooted in, a strand enters the start of any strand of a
+  /// cluster that does not start at the root (whatever its type) the same way, when that
+  /// strand's tip hangs farther than this from the scalp: a tail or a braid after its
+  /// band. (A cap's own cards and what is stacked on it end over the scalp.)
+  double continued_tip_off_scalp_h = 0.15;
   /// Where the hair continues into a cluster that does not start at the root (a
   /// ponytail's tail after its band; the lower part of some layered cuts), a strand whose
   /// card ends before it (cards stacked on a cap end anywhere) joins the nearest card that

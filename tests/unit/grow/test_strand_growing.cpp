@@ -469,6 +469,39 @@ TEST(StrandGrowing, ContinuedRootGroupsCarryNoRootsAndAreReachedAcrossTheirGap) 
     EXPECT_GT(last_of(cut.strands, s).y(), tip_end_y + 0.05) << "strand " << s;
 }
 
+// Leaving the cluster it is rooted in, a strand enters any strand of a cluster that does
+// not start at the root, whatever its type, across the same gap, where that strand hangs
+// off the scalp: a tail whose pieces typeify typed middle or tip (ponytail01's), after
+// its band. Not where it ends over the scalp (continued_tip_off_scalp_h).
+TEST(StrandGrowing, StrandsLeavingTheirClusterReachATailThatHangsOffTheScalp) {
+  // The middle group (typed middle) 0.04 m (0.17 H) below card 0's ends, its cluster (1)
+  // not starting at the root; its tip and the tip group's hang far below the scalp cap.
+  Scene scene = make_scene(true, 0, 0.04);
+  ASSERT_EQ(scene.input.group_type[kMiddleGroup], GroupType::middle);
+  scene.input.cluster_starts_at_root = {1, 0, 1};
+  const double tip_end_y = scene.tip_ends.front().y();
+  const auto reaching_tip = [&](const GrowResult& result) {
+    int64_t reaching = 0;
+    for (int64_t s = 0; s < result.strands.strand_count(); ++s)
+      if (std::abs(last_of(result.strands, s).y() - tip_end_y) <= 0.01) ++reaching;
+    return reaching;
+  };
+  const GrowResult result = grow_strands(scene.input, params_with(kStrandCount));
+  const int64_t reaching = reaching_tip(result);
+  EXPECT_GT(reaching, 20);
+
+  // With the bar above where the middle's strands end (about 0.25 m, 1 H, from the
+  // scalp), they count as lying over it, and no strand crosses the gap.
+  GrowParams over = params_with(kStrandCount);
+  over.continued_tip_off_scalp_h = 2;
+  const int64_t reaching_over = reaching_tip(grow_strands(scene.input, over));
+  std::printf(
+      "[ grow     ] sphere: %lld strands cross the 0.04 m gap into a hanging middle group "
+      "(%lld with the bar above it)\n",
+      static_cast<long long>(reaching), static_cast<long long>(reaching_over));
+  EXPECT_EQ(reaching_over, 0);
+}
+
 /// Height of `p` above the sphere.
 double height_above_sphere(const Vec3& p) { return (p - kCentre).norm() - kRadius; }
 
