@@ -426,8 +426,8 @@ class GrowingContext {
   std::unique_ptr<PointIndex> root_index_;
   std::vector<int32_t> point_strand_;
   std::vector<StrandEntry> entries_;
-  std::vector<uint8_t>
-      hangs_off_scalp_;  ///< per input strand: its tip off the scalp (next_entry())
+  /// Per input strand: whether its tip hangs off the scalp (next_entry()).
+  std::vector<uint8_t> hangs_off_scalp_;
   std::unique_ptr<PointIndex> entry_index_;
   std::unique_ptr<PointIndex> all_index_;          ///< every input point, by row
   std::vector<uint8_t> group_feeds_continuation_;  ///< per group
