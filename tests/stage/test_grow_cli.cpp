@@ -329,6 +329,10 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
       {{extract, ponytail.types.string(), clusters}, "another model"},
       {{extract, types, clusters, "--step_h", "5"}, "step_h"},
       {{extract, types, clusters, "--strand_count", "0"}, "strand_count"},
+      {{extract, types, clusters, "--continued_tip_off_scalp_h", "-0.1"},
+       "continued_tip_off_scalp_h"},
+      {{extract, types, clusters, "--continued_tip_off_scalp_h", "nan"},
+       "continued_tip_off_scalp_h"},
       {{extract, types, clusters, "--scalp_cover_h", "1e-6"}, "no scalp triangle"},
       {{extract, types}, "CLUSTERS_H5"},
   };
