@@ -69,6 +69,11 @@ int main(int argc, char** argv) {
                    "bound point over at least this length, its last held points giving way "
                    "(0: held right up to the braid)",
                    hair::ParamRange::closed(0, 1));
+  app.params().add("wisp_seam_length_m", params.wisp_seam_length_m,
+                   "a braided strand's points within this arc length of a seam between two "
+                   "wisp tetrahedra move partly with the other one too (half at the seam; 0: "
+                   "each with its own only)",
+                   hair::ParamRange::closed(0, 1));
 
   return app.run(argc, argv, [&] {
     hair::h5::File guides_file = hair::h5::File::open_read_only(guides_path);

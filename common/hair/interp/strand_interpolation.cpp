@@ -41,6 +41,9 @@ void check_params(const InterpolationParams& p) {
   if (!(p.wisp_bridge_length_m >= 0 && p.wisp_bridge_length_m <= 1))
     throw Error::usage("wisp_bridge_length_m must be within [0, 1], not " +
                        std::to_string(p.wisp_bridge_length_m));
+  if (!(p.wisp_seam_length_m >= 0 && p.wisp_seam_length_m <= 1))
+    throw Error::usage("wisp_seam_length_m must be within [0, 1], not " +
+                       std::to_string(p.wisp_seam_length_m));
 }
 
 /// Smallest height of triangle (a, b, c) over its longest edge.
@@ -142,6 +145,61 @@ void bind_wisp_points(const InterpolationGuides& guides, int64_t point_count,
                                          " names a tetrahedron its wisp does not have");
     binding.tetrahedron[static_cast<size_t>(row)] = tetrahedron;
     binding.offset_m.row(row) = guides.binding_local_m[b].transpose();
+  }
+}
+
+/// The seams of every strand's bound points (StrandBinding::seam_offsets and what
+/// follows): where consecutive bound points lie in different tetrahedra, the points within
+/// `seam_length_m` of arc of the seam's middle, each with the tetrahedron across the
+/// nearest seam, weighted 0.5 (1 - d / seam_length_m) at arc distance d. Needs bound_from.
+void bind_wisp_seams(const StrandSet& strands, const InterpolationGuides& guides,
+                     double seam_length_m, StrandBinding& binding) {
+  const int64_t strand_count = strands.strand_count();
+  binding.seam_offsets.assign(static_cast<size_t>(strand_count) + 1, 0);
+  std::vector<double> arc;
+  std::vector<size_t> seams;  // index k in the bound run: tetrahedron[k] != tetrahedron[k - 1]
+  for (int64_t s = 0; s < strand_count; ++s) {
+    const auto si = static_cast<size_t>(s);
+    const int64_t bound = strands.offsets[si] + binding.bound_from[si],
+                  end = strands.offsets[si + 1];
+    const auto tetrahedron_of = [&](size_t k) {
+      return binding.tetrahedron[static_cast<size_t>(bound) + k];
+    };
+    seams.clear();
+    if (seam_length_m > 0 && end - bound >= 2) {
+      const auto n = static_cast<size_t>(end - bound);
+      arc.assign(n, 0.0);
+      for (size_t k = 1; k < n; ++k) {
+        const auto row = bound + static_cast<int64_t>(k);
+        arc[k] =
+            arc[k - 1] + (point_of(strands.points, row) - point_of(strands.points, row - 1)).norm();
+        if (tetrahedron_of(k) != tetrahedron_of(k - 1)) seams.push_back(k);
+      }
+      for (size_t k = 0; k < n && !seams.empty(); ++k) {
+        // The nearest seam by arc; the point lies in the tetrahedron on its own side.
+        double nearest_m = std::numeric_limits<double>::infinity();
+        size_t seam = 0;
+        for (size_t j : seams) {
+          const double distance_m = std::abs(arc[k] - 0.5 * (arc[j - 1] + arc[j]));
+          if (distance_m < nearest_m) {
+            nearest_m = distance_m;
+            seam = j;
+          }
+        }
+        if (nearest_m >= seam_length_m) continue;
+        const int32_t other = k < seam ? tetrahedron_of(seam) : tetrahedron_of(seam - 1);
+        const float* rest = guides.wisp_rest_frames.data() + 7 * static_cast<size_t>(other);
+        const Eigen::Quaterniond rotation(rest[3], rest[4], rest[5], rest[6]);
+        const Vec3 local = rotation.normalized().conjugate() *
+                           (point_of(strands.points, bound + static_cast<int64_t>(k)) -
+                            Vec3(rest[0], rest[1], rest[2]));
+        binding.seam_row.push_back(bound + static_cast<int64_t>(k));
+        binding.seam_tetrahedron.push_back(other);
+        binding.seam_weight.push_back(static_cast<float>(0.5 * (1 - nearest_m / seam_length_m)));
+        for (int r = 0; r < 3; ++r) binding.seam_local_m.push_back(static_cast<float>(local[r]));
+      }
+    }
+    binding.seam_offsets[si + 1] = static_cast<int64_t>(binding.seam_row.size());
   }
 }
 
@@ -491,6 +549,7 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
     follow(moving, s, *choice, guides, followable, binding);
   }
   find_runs(strands, binding);
+  bind_wisp_seams(strands, guides, params.wisp_seam_length_m, binding);
   return binding;
 }
 
@@ -614,6 +673,18 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     // Bound: origin + R_tet local.
     transform_points(tetrahedron_frames.data(), binding.tetrahedron.data() + bound,
                      offset + 3 * bound, end - bound, out + 3 * bound);
+    // Near a seam between two tetrahedra: (1 - w) o_own + R_own l_own + w (o + R l) of
+    // the other one.
+    for (int64_t e = binding.seam_offsets[si]; e < binding.seam_offsets[si + 1]; ++e) {
+      const auto ei = static_cast<size_t>(e);
+      const float* f = tetrahedron_frames.data() +
+                       static_cast<size_t>(binding.seam_tetrahedron[ei]) * kFrameFloats;
+      const float* l = binding.seam_local_m.data() + 3 * ei;
+      const float w = binding.seam_weight[ei];
+      float* p = out + 3 * binding.seam_row[ei];
+      for (int r = 0; r < 3; ++r)
+        p[r] = (1 - w) * p[r] + w * (f[r] + f[4 + r] * l[0] + f[8 + r] * l[1] + f[12 + r] * l[2]);
+    }
     // Bridged: R p + t + s (x_b - (R b + t)), b the first bound point at rest and x_b where
     // its tetrahedron carries it: the head's motion plus a share of how far the wisp's top
     // moved from where the head would have carried it (no lever arm from the tetrahedron).

@@ -52,6 +52,12 @@ struct InterpolationParams {
   /// the braid's top moving against the head spreads over it rather than tearing one
   /// segment (docs/interpolate.md).
   double wisp_bridge_length_m = 0.06;
+  /// Where a braided strand passes from one wisp tetrahedron to the next, its points
+  /// within this arc length of the seam move partly with the other tetrahedron too (half
+  /// at the seam, none at this distance), so that two tetrahedra turning apart bend the
+  /// strand there instead of tearing the segment between them (docs/interpolate.md). 0:
+  /// each point moves with its own tetrahedron only.
+  double wisp_seam_length_m = 0.02;
 };
 
 /// The simulated guides as interpolation reads them (guides.h5).
@@ -113,6 +119,15 @@ struct StrandBinding {
   std::vector<std::array<int32_t, 3>> run_particles;
   std::vector<uint8_t> run_of_point;
   int64_t tetrahedron_count = 0;
+  /// Bound points near a seam between two wisp tetrahedra (wisp_seam_length_m): per strand
+  /// its first entry (#strands + 1, CSR); per entry the point's row, the other
+  /// tetrahedron, the share of the point's position it gives, and the point's rest
+  /// position in that tetrahedron's rest frame (3 floats).
+  std::vector<int64_t> seam_offsets;
+  std::vector<int64_t> seam_row;
+  std::vector<int32_t> seam_tetrahedron;
+  std::vector<float> seam_weight;
+  std::vector<float> seam_local_m;
   std::vector<int64_t> guide_offsets;  ///< the guides' CSR offsets
   Points3f guide_rest_points;          ///< the guides at rest (their segments' rest directions)
 };

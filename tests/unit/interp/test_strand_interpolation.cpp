@@ -519,6 +519,84 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
               1e-5);
 }
 
+TEST(StrandInterpolation, ABraidedStrandBendsAtASeamBetweenTetrahedraNotTears) {
+  // A braided strand of 16 points 5 mm apart down -Y, its first 8 bound to one wisp
+  // tetrahedron and the rest to the next (the two new tetrahedra 2 and 3 of the scene's
+  // wisp), as a braid's strand passes from piece to piece. The second tetrahedron then
+  // turns 0.5 rad about Z about its origin and moves 2 cm along X, the first still: each
+  // point carried by its own tetrahedron alone, the segment across the seam tears; with
+  // the seam blended over 2 cm (the default), the turn bends the strand there instead.
+  Scene scene = make_scene();
+  std::vector<Vec3> points;
+  for (int i = 0; i < 16; ++i) points.push_back(Vec3(0.5, -0.005 * i, 0.05));
+  Points3f block(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t i = 0; i < points.size(); ++i)
+    block.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
+  scene.strands.append_strand(block);
+  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
+  point_cluster.insert(point_cluster.end(), points.size(), kBraid);
+  const int64_t s = scene.strands.strand_count() - 1, begin = scene.strands.offsets[s];
+  const Vec3 first_origin(0.5, -0.01, 0.05), second_origin(0.5, -0.05, 0.05);
+  for (const Vec3& origin : {first_origin, second_origin})
+    scene.wisp_rest.insert(scene.wisp_rest.end(),
+                           {static_cast<float>(origin.x()), static_cast<float>(origin.y()),
+                            static_cast<float>(origin.z()), 1, 0, 0, 0});
+  scene.guides.wisp_rest_frames = scene.wisp_rest;
+  scene.guides.wisp_tetrahedron_offsets = {0, 4};
+  for (int i = 0; i < 16; ++i) {
+    const bool second = i >= 8;
+    scene.guides.binding_point.push_back(begin + i);
+    scene.guides.binding_wisp.push_back(0);
+    scene.guides.binding_tetrahedron.push_back(second ? 3 : 2);
+    scene.guides.binding_local_m.push_back(
+        (points[static_cast<size_t>(i)] - (second ? second_origin : first_origin)).cast<float>());
+  }
+  std::vector<float> wisp = scene.wisp_rest;
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
+  wisp[21] += 0.02f;
+  wisp[24] = static_cast<float>(turn.w());
+  wisp[25] = static_cast<float>(turn.x());
+  wisp[26] = static_cast<float>(turn.y());
+  wisp[27] = static_cast<float>(turn.z());
+  const std::vector<float> guide_points =
+      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
+
+  InterpolationParams apart;
+  apart.wisp_seam_length_m = 0;
+  StrandBinding binding = bind_strands(scene.strands, scene.guides, apart);
+  EXPECT_EQ(binding.method[static_cast<size_t>(s)], InterpolationMethod::braided);
+  std::vector<float> torn;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, torn);
+  const double torn_stretch = largest_stretch(scene, torn, s);
+
+  binding = bind_strands(scene.strands, scene.guides, {});
+  // The points within 2 cm of the seam (between points 7 and 8, 2.5 mm from each): four
+  // on each side.
+  EXPECT_EQ(binding.seam_offsets[static_cast<size_t>(s) + 1] -
+                binding.seam_offsets[static_cast<size_t>(s)],
+            8);
+  std::vector<float> at_rest, blended;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), scene.wisp_rest.data(), {}},
+                    at_rest);
+  for (int i = 0; i < 16; ++i)
+    EXPECT_LT((row_of(at_rest, begin + i) - points[static_cast<size_t>(i)]).norm(), 1e-6);
+  interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, blended);
+  const double blended_stretch = largest_stretch(scene, blended, s);
+  std::printf("[ interp   ] braid seam: largest stretch %.2f apart, %.2f blended over 2 cm\n",
+              torn_stretch, blended_stretch);
+  EXPECT_GT(torn_stretch, 2.0);
+  EXPECT_LT(blended_stretch, 1.5);
+  // Beyond 2 cm of the seam each point moves with its own tetrahedron alone.
+  for (int i : {0, 1, 2, 3})
+    EXPECT_LT((row_of(blended, begin + i) - points[static_cast<size_t>(i)]).norm(), 1e-6);
+  const Vec3 moved = second_origin + Vec3(0.02, 0, 0);
+  for (int i : {12, 13, 14, 15})
+    EXPECT_LT((row_of(blended, begin + i) -
+               (moved + turn * (points[static_cast<size_t>(i)] - second_origin)))
+                  .norm(),
+              1e-6);
+}
+
 TEST(StrandInterpolation, TheSameWhateverTheThreadCount) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
@@ -550,6 +628,11 @@ TEST(StrandInterpolation, RefusesParametersOutOfRange) {
   params.wisp_bridge_length_m = -0.01;
   EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
   params.wisp_bridge_length_m = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
+  params = {};
+  params.wisp_seam_length_m = -0.01;
+  EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
+  params.wisp_seam_length_m = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(bind_strands(scene.strands, scene.guides, params), Error);
 }
 
