@@ -145,28 +145,29 @@ TEST_F(InterpolateCli, Braid01sCapStrandsAreBridgedIntoTheBraidNotTorn) {
   double worst = 0, worst_inside = 0;
   for (int64_t row = 0; row < frames.frame_count(); ++row) {
     hair::Points3f points = hair::read_frame_points(file, row);
-    for (int64_t s = 0; s < frames.rest.strand_count(); ++s) {
-      const int64_t begin = offsets[static_cast<size_t>(s)];
-      const int64_t first_bound = begin + bound_from[static_cast<size_t>(s)];
-      if (first_bound >= offsets[static_cast<size_t>(s) + 1] || first_bound == begin) continue;
-      into_the_braid += row == 0;
-      double strand_worst = 0;
-      for (int64_t p = begin + 1; p <= first_bound; ++p)
-        strand_worst = std::max(
-            strand_worst,
+    // The largest ratio of a segment's length to its rest length, of the segments ending
+    // at points [first, last).
+    const auto largest_stretch = [&](int64_t first, int64_t last) {
+      double largest = 0;
+      for (int64_t p = first; p < last; ++p)
+        largest = std::max(
+            largest,
             (hair::point_of(points, p) - hair::point_of(points, p - 1)).norm() /
                 (hair::point_of(frames.rest.points, p) - hair::point_of(frames.rest.points, p - 1))
                     .norm());
+      return largest;
+    };
+    for (int64_t s = 0; s < frames.rest.strand_count(); ++s) {
+      const int64_t begin = offsets[static_cast<size_t>(s)];
+      const int64_t end = offsets[static_cast<size_t>(s) + 1];
+      const int64_t first_bound = begin + bound_from[static_cast<size_t>(s)];
+      if (first_bound >= end || first_bound == begin) continue;
+      into_the_braid += row == 0;
+      const double strand_worst = largest_stretch(begin + 1, first_bound + 1);
       worst = std::max(worst, strand_worst);
       torn += strand_worst > 2.5;
       // Inside the braid: across the seams between its wisp's tetrahedra.
-      double inside_worst = 0;
-      for (int64_t p = first_bound + 1; p < offsets[static_cast<size_t>(s) + 1]; ++p)
-        inside_worst = std::max(
-            inside_worst,
-            (hair::point_of(points, p) - hair::point_of(points, p - 1)).norm() /
-                (hair::point_of(frames.rest.points, p) - hair::point_of(frames.rest.points, p - 1))
-                    .norm());
+      const double inside_worst = largest_stretch(first_bound + 1, end);
       worst_inside = std::max(worst_inside, inside_worst);
       torn_inside += inside_worst > 2.5;
     }

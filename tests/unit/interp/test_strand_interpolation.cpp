@@ -438,6 +438,34 @@ double largest_stretch(const Scene& scene, const std::vector<float>& points, int
   return largest;
 }
 
+/// Appends a strand of `points` (with its points' clusters) to the scene; returns its index.
+int64_t add_scene_strand(Scene& scene, const std::vector<Vec3>& points,
+                         const std::vector<int32_t>& clusters) {
+  Points3f block(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t i = 0; i < points.size(); ++i)
+    block.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
+  scene.strands.append_strand(block);
+  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
+  point_cluster.insert(point_cluster.end(), clusters.begin(), clusters.end());
+  return scene.strands.strand_count() - 1;
+}
+
+/// Appends an unturned wisp tetrahedron at `origin` to the scene's rest frames.
+void add_rest_tetrahedron(Scene& scene, const Vec3& origin) {
+  scene.wisp_rest.insert(scene.wisp_rest.end(),
+                         {static_cast<float>(origin.x()), static_cast<float>(origin.y()),
+                          static_cast<float>(origin.z()), 1, 0, 0, 0});
+  scene.guides.wisp_rest_frames = scene.wisp_rest;
+}
+
+/// Turns tetrahedron `t` of the wisp frames `wisp` (7 floats each) to `rotation`.
+void set_rotation(std::vector<float>& wisp, size_t t, const Eigen::Quaterniond& rotation) {
+  wisp[7 * t + 3] = static_cast<float>(rotation.w());
+  wisp[7 * t + 4] = static_cast<float>(rotation.x());
+  wisp[7 * t + 5] = static_cast<float>(rotation.y());
+  wisp[7 * t + 6] = static_cast<float>(rotation.z());
+}
+
 TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
   // A strand over the cap (20 points 5 mm apart, fixed) that runs on into a braid (6 points
   // bound to a third wisp tetrahedron), as grow makes of a cap feeding a braid. The
@@ -455,18 +483,10 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
     points.push_back(Vec3(0.4, 0.01 - 0.005 * k, 0.05));
     clusters.push_back(kBraid);
   }
-  Points3f block(static_cast<Eigen::Index>(points.size()), 3);
-  for (size_t i = 0; i < points.size(); ++i)
-    block.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
-  scene.strands.append_strand(block);
-  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
-  point_cluster.insert(point_cluster.end(), clusters.begin(), clusters.end());
-  const int64_t s = scene.strands.strand_count() - 1, begin = scene.strands.offsets[s];
+  const int64_t s = add_scene_strand(scene, points, clusters),
+                begin = scene.strands.offsets[static_cast<size_t>(s)];
   const Vec3 origin(0.4, -0.01, 0.05);
-  scene.wisp_rest.insert(scene.wisp_rest.end(),
-                         {static_cast<float>(origin.x()), static_cast<float>(origin.y()),
-                          static_cast<float>(origin.z()), 1, 0, 0, 0});
-  scene.guides.wisp_rest_frames = scene.wisp_rest;
+  add_rest_tetrahedron(scene, origin);
   scene.guides.wisp_tetrahedron_offsets = {0, 3};
   for (int i = 20; i < 26; ++i) {
     scene.guides.binding_point.push_back(begin + i);
@@ -477,10 +497,7 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
   std::vector<float> wisp = scene.wisp_rest;
   const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
   wisp[16] -= 0.03f;
-  wisp[17] = static_cast<float>(turn.w());
-  wisp[18] = static_cast<float>(turn.x());
-  wisp[19] = static_cast<float>(turn.y());
-  wisp[20] = static_cast<float>(turn.z());
+  set_rotation(wisp, 2, turn);
   const std::vector<float> guide_points =
       moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
 
@@ -529,19 +546,11 @@ TEST(StrandInterpolation, ABraidedStrandBendsAtASeamBetweenTetrahedraNotTears) {
   Scene scene = make_scene();
   std::vector<Vec3> points;
   for (int i = 0; i < 16; ++i) points.push_back(Vec3(0.5, -0.005 * i, 0.05));
-  Points3f block(static_cast<Eigen::Index>(points.size()), 3);
-  for (size_t i = 0; i < points.size(); ++i)
-    block.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
-  scene.strands.append_strand(block);
-  auto& point_cluster = std::get<std::vector<int32_t>>(scene.strands.point_attributes["cluster"]);
-  point_cluster.insert(point_cluster.end(), points.size(), kBraid);
-  const int64_t s = scene.strands.strand_count() - 1, begin = scene.strands.offsets[s];
+  const int64_t s = add_scene_strand(scene, points, std::vector<int32_t>(points.size(), kBraid)),
+                begin = scene.strands.offsets[static_cast<size_t>(s)];
   const Vec3 first_origin(0.5, -0.01, 0.05), second_origin(0.5, -0.05, 0.05);
-  for (const Vec3& origin : {first_origin, second_origin})
-    scene.wisp_rest.insert(scene.wisp_rest.end(),
-                           {static_cast<float>(origin.x()), static_cast<float>(origin.y()),
-                            static_cast<float>(origin.z()), 1, 0, 0, 0});
-  scene.guides.wisp_rest_frames = scene.wisp_rest;
+  add_rest_tetrahedron(scene, first_origin);
+  add_rest_tetrahedron(scene, second_origin);
   scene.guides.wisp_tetrahedron_offsets = {0, 4};
   for (int i = 0; i < 16; ++i) {
     const bool second = i >= 8;
@@ -554,10 +563,7 @@ TEST(StrandInterpolation, ABraidedStrandBendsAtASeamBetweenTetrahedraNotTears) {
   std::vector<float> wisp = scene.wisp_rest;
   const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
   wisp[21] += 0.02f;
-  wisp[24] = static_cast<float>(turn.w());
-  wisp[25] = static_cast<float>(turn.x());
-  wisp[26] = static_cast<float>(turn.y());
-  wisp[27] = static_cast<float>(turn.z());
+  set_rotation(wisp, 3, turn);
   const std::vector<float> guide_points =
       moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
 
