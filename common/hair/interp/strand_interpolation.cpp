@@ -673,7 +673,7 @@ void interpolate_frame(const StrandBinding& binding, const StrandSet& strands,
     // Bound: origin + R_tet local.
     transform_points(tetrahedron_frames.data(), binding.tetrahedron.data() + bound,
                      offset + 3 * bound, end - bound, out + 3 * bound);
-    // Near a seam between two tetrahedra: (1 - w) o_own + R_own l_own + w (o + R l) of
+    // Near a seam between two tetrahedra: (1 - w)(o_own + R_own l_own) + w (o + R l) of
     // the other one.
     for (int64_t e = binding.seam_offsets[si]; e < binding.seam_offsets[si + 1]; ++e) {
       const auto ei = static_cast<size_t>(e);
