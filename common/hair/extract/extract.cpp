@@ -444,6 +444,7 @@ std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& f
     if (fade.judged_edges > 0) {
       evidence.alpha_fade_vote = fade.vote;
       evidence.alpha_fade_mean_fall = fade.mean_fall;
+      evidence.alpha_fade_rail_fall = fade.mean_rail_fall;
     }
     regions[i].evidence = evidence;
   }
@@ -463,8 +464,7 @@ std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& f
 int paint_overrules_ids(std::vector<RegionRails>& regions, const OrientationThresholds& thresholds,
                         double min_agreement) {
   auto fade_decides = [&](const OrientationEvidence& e) {
-    return e.alpha_fade_vote && e.alpha_fade_mean_fall >= thresholds.alpha_fade_min_fall &&
-           std::abs(*e.alpha_fade_vote) >= thresholds.alpha_fade_min_vote && e.uv_growth &&
+    return alpha_fade_decides(e, thresholds, true) && e.uv_growth &&
            std::abs(*e.uv_growth) >= thresholds.uv_min_growth;
   };
   // v grows towards the fade (the tips) when the alpha falls along the rails (vote > 0)
@@ -508,6 +508,17 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
   for (RegionRails& region : regions)
     if (!region.decision)
       region.decision = decide_orientation(region.evidence, thresholds, conventions);
+  for (const RegionRails& region : regions) {
+    const OrientationEvidence& e = region.evidence;
+    spdlog::debug(
+        "patch {} region {}: ids vote {:.2f}, head distance slope {:.2f}, v growth {}, height "
+        "slope {:.2f}, alpha fade vote {} (fall {:.3f} a face, {:.3f} a rail): {}{}",
+        region.patch, region.region_in_patch, e.vertex_order_vote, e.scalp_distance_slope,
+        e.uv_growth ? fmt::format("{:.2f}", *e.uv_growth) : "none", e.height_slope,
+        e.alpha_fade_vote ? fmt::format("{:.2f}", *e.alpha_fade_vote) : "none",
+        e.alpha_fade_mean_fall, e.alpha_fade_rail_fall, orientation_rule_name(region.decision->rule),
+        region.decision->reverse ? ", reversed" : "");
+  }
 }
 
 /// A patch without usable quads: one strand along its principal axis, directed by the
@@ -963,6 +974,7 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   thresholds.height_min_slope = params.height_min_slope;
   thresholds.height_min_head_distance_m = params.height_min_head_distance_h * head_height_m;
   thresholds.alpha_fade_min_fall = params.alpha_fade_min_fall;
+  thresholds.alpha_fade_min_rail_fall = params.alpha_fade_min_rail_fall;
 
   // Patches whose rails would cross the paint are cut into strands along it instead;
   // their rails still take part in deciding directions, and orient the strands. Only

@@ -41,6 +41,9 @@ struct ExtractParams {
   /// Mean fall of the painted alpha along a region's rails, per face crossed (alpha
   /// 0 to 1), from which the fade decides root from tip (OrientationRule::alpha_fade).
   double alpha_fade_min_fall = 0.05;
+  /// ...or mean fall along a whole rail, from one end to the other, from which it decides
+  /// too: a rail of many small faces (a tube, a finely cut card) fades by little per face.
+  double alpha_fade_min_rail_fall = 0.3;
   /// A rail votes on vertex order when at least this fraction of its steps go the
   /// same way (ids growing or falling).
   double ordered_rail_fraction = 0.95;
@@ -88,7 +91,7 @@ struct ExtractStats {
   int64_t rails_parted = 0;       ///< closed or draped rails cut in two at their top
   int64_t fragments_dropped = 0;  ///< along-chains too short to be rails
   int64_t family_conflicts = 0;
-  std::array<int64_t, 7> groups_by_rule{};  ///< indexed by OrientationRule
+  std::array<int64_t, 7> groups_by_rule{};         ///< indexed by OrientationRule
   std::array<int64_t, 3> regions_by_along_rule{};  ///< indexed by AlongRule
   /// Regions whose rails the paint chose against what chain length alone would choose.
   int64_t regions_turned_by_paint = 0;

@@ -46,6 +46,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "mean fall of the painted alpha along a region's rails (0 to 1 across a face) "
              "from which the fade tells root from tip",
              ParamRange::above(0));
+  params.add("alpha_fade_min_rail_fall", p.alpha_fade_min_rail_fall,
+             "...or mean fall along a whole rail, end to end (0 to 1), from which it does too "
+             "(rails of many small faces fade by little per face)",
+             ParamRange::above(0));
   params.add("min_rail_length_share", p.min_rail_length_share,
              "along-chains shorter than this share of their region's longest are dropped "
              "as fragments",

@@ -89,7 +89,8 @@ AlphaFade rails_alpha_fade(const PolyMesh& mesh, const PaintedFlow& flow,
   AlphaFade fade;
   if (flow.coherence.size() != static_cast<size_t>(mesh.face_count())) return fade;
   double signed_sum = 0, magnitude_sum = 0;
-  for (const auto& rail : rails)
+  for (const auto& rail : rails) {
+    const int64_t edges_before = fade.judged_edges;
     for (size_t i = 1; i < rail.size(); ++i) {
       Eigen::Vector3f edge = mesh.vertices.row(rail[i]) - mesh.vertices.row(rail[i - 1]);
       if (!(edge.norm() > 0)) continue;
@@ -108,8 +109,13 @@ AlphaFade rails_alpha_fade(const PolyMesh& mesh, const PaintedFlow& flow,
       magnitude_sum += std::abs(fall);
       ++fade.judged_edges;
     }
+    if (fade.judged_edges > edges_before) ++fade.judged_rails;
+  }
   if (magnitude_sum > 0) fade.vote = signed_sum / magnitude_sum;
-  if (fade.judged_edges > 0) fade.mean_fall = magnitude_sum / static_cast<double>(fade.judged_edges);
+  if (fade.judged_edges > 0)
+    fade.mean_fall = magnitude_sum / static_cast<double>(fade.judged_edges);
+  if (fade.judged_rails > 0)
+    fade.mean_rail_fall = magnitude_sum / static_cast<double>(fade.judged_rails);
   return fade;
 }
 

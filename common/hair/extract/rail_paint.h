@@ -49,12 +49,18 @@ int family_along_paint(const std::array<FamilyPaint, 2>& paint, double min_judge
 /// What the alpha fade of the faces along some rails says about their direction.
 struct AlphaFade {
   /// Over the rails' edges beside faces with a clear flow: sum of the alpha's fall along
-  /// the edge's direction (the face's fall times the cosine between edge and flow) (positive: the alpha falls from the rail's first point towards
-  /// its last, the tips lie that way) over the sum of its magnitude, in [-1, 1].
+  /// the edge's direction (the face's fall times the cosine between edge and flow) (positive: the
+  /// alpha falls from the rail's first point towards its last, the tips lie that way) over the sum
+  /// of its magnitude, in [-1, 1].
   double vote = 0;
   /// Mean magnitude of the fall per judged edge (alpha, 0 to 1, across one face).
   double mean_fall = 0;
+  /// Mean magnitude of the fall along a whole rail (the sum over its judged edges),
+  /// over the rails with at least one judged edge: how much the alpha fades from one end
+  /// of the hair to the other, whatever the number of faces along it.
+  double mean_rail_fall = 0;
   int64_t judged_edges = 0;
+  int64_t judged_rails = 0;
 };
 
 /// The alpha fade along `rails` (vertex ids of `mesh`, in their order).

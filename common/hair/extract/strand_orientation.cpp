@@ -5,6 +5,35 @@
 
 namespace hair {
 
+const char* orientation_rule_name(OrientationRule rule) {
+  switch (rule) {
+    case OrientationRule::vertex_order:
+      return "vertex_order";
+    case OrientationRule::scalp_distance:
+      return "scalp_distance";
+    case OrientationRule::continuation:
+      return "continuation";
+    case OrientationRule::uv:
+      return "uv";
+    case OrientationRule::height:
+      return "height";
+    case OrientationRule::parting:
+      return "parting";
+    case OrientationRule::alpha_fade:
+      return "alpha_fade";
+  }
+  return "unknown";
+}
+
+bool alpha_fade_decides(const OrientationEvidence& evidence,
+                        const OrientationThresholds& thresholds, bool whole_rails_count) {
+  const bool falls_enough =
+      evidence.alpha_fade_mean_fall >= thresholds.alpha_fade_min_fall ||
+      (whole_rails_count && evidence.alpha_fade_rail_fall >= thresholds.alpha_fade_min_rail_fall);
+  return evidence.alpha_fade_vote && falls_enough &&
+         std::abs(*evidence.alpha_fade_vote) >= thresholds.alpha_fade_min_vote;
+}
+
 std::optional<OrientationDecision> decide_orientation(
     const OrientationEvidence& evidence, const OrientationThresholds& thresholds,
     const std::optional<MeshConventions>& conventions) {
@@ -37,8 +66,7 @@ std::optional<OrientationDecision> decide_orientation(
                                clamp01(std::abs(evidence.scalp_distance_slope) /
                                        (2 * thresholds.scalp_distance_min_slope))};
   if (!conventions) return std::nullopt;
-  if (evidence.alpha_fade_vote && evidence.alpha_fade_mean_fall >= thresholds.alpha_fade_min_fall &&
-      std::abs(*evidence.alpha_fade_vote) >= thresholds.alpha_fade_min_vote)
+  if (alpha_fade_decides(evidence, thresholds, false))
     return OrientationDecision{*evidence.alpha_fade_vote < 0, OrientationRule::alpha_fade,
                                clamp01(std::abs(*evidence.alpha_fade_vote))};
   if (conventions->uv_growth_sign && evidence.uv_growth &&

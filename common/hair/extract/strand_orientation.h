@@ -16,6 +16,9 @@ enum class OrientationRule : int8_t {
   alpha_fade = 6,      ///< the painted alpha fades out towards the tip
 };
 
+/// The rule's name as extract.h5 stores it ("vertex_order", ...).
+const char* orientation_rule_name(OrientationRule rule);
+
 /// What a region of rails (consistently oriented chains of one patch) says about its
 /// direction, for the chains as they are. Positive values favour keeping them.
 struct OrientationEvidence {
@@ -35,6 +38,9 @@ struct OrientationEvidence {
   std::optional<double> alpha_fade_vote = std::nullopt;
   /// Mean magnitude of the alpha's fall per face along the rails (0 to 1).
   double alpha_fade_mean_fall = 0;
+  /// Mean magnitude of the alpha's fall along a whole rail (0 to 1): how much it fades
+  /// from one end of the hair to the other, whatever the faces' number.
+  double alpha_fade_rail_fall = 0;
   /// Smallest distance of a rail end from the head, in metres: hair lying on the head
   /// (a cap, short hair brushed up) may rise from its root; hair off the head falls.
   double head_distance_min_m = 0;
@@ -48,6 +54,7 @@ struct OrientationThresholds {
   double height_min_slope = 0.3;          ///< |height slope| to settle ids against head distance...
   double height_min_head_distance_m = 0;  ///< ...for hair at least this far off the head
   double alpha_fade_min_fall = 0.05;      ///< mean alpha fall per face for the fade to decide...
+  double alpha_fade_min_rail_fall = 0.3;  ///< ...or along a whole rail...
   double alpha_fade_min_vote = 0.6;       ///< ...when this much of it falls one way
 };
 
@@ -62,6 +69,15 @@ struct OrientationDecision {
   OrientationRule rule = OrientationRule::height;
   float confidence = 0;  ///< in [0, 1]
 };
+
+/// Whether the painted alpha's fade decides root from tip: 60% of its fall one way
+/// (`alpha_fade_min_vote`), and a mean fall of `alpha_fade_min_fall` per face crossed or,
+/// if `whole_rails_count`, of `alpha_fade_min_rail_fall` along a whole rail (a tube or a
+/// finely cut card fades by little per face however clearly its paint fades to the tips).
+/// The fade alone (rule 3b below) asks the fall per face; where the texture's v convention
+/// backs it (paint over vertex ids, extract.cpp), the fall along the rail is enough.
+bool alpha_fade_decides(const OrientationEvidence& evidence,
+                        const OrientationThresholds& thresholds, bool whole_rails_count);
 
 /// Decides a region's direction (DESIGN: "check vertex order per patch, fall back on
 /// geometry where it is inconsistent"):

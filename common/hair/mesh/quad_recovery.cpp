@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <unordered_map>
 
 namespace hair {
@@ -14,6 +15,9 @@ uint64_t directed_edge_key(int32_t from, int32_t to) {
 }
 
 struct PairCandidate {
+  /// How far the quad's worst corner is from a right angle in the texture's space where
+  /// the mesh has UVs (a card's quads are rectangles there), else in 3D: the greedy order.
+  double rank_deviation_deg;
   double worst_corner_deviation_deg;
   int64_t face_a;
   int64_t face_b;
@@ -37,6 +41,26 @@ double corner_deviation_deg(const PolyMesh& mesh, const std::array<int32_t, 4>& 
   return worst;
 }
 
+/// The worst corner's deviation from a right angle of the quad whose corners are the
+/// mesh's corners `corners` in UV space; nullopt without UVs or with a degenerate corner.
+std::optional<double> uv_corner_deviation_deg(const PolyMesh& mesh,
+                                              const std::array<int64_t, 4>& corners) {
+  if (!mesh.has_uv()) return std::nullopt;
+  double worst = 0;
+  for (int c = 0; c < 4; ++c) {
+    auto uv = [&](int k) {
+      const int64_t corner = corners[static_cast<size_t>(k % 4)];
+      return Eigen::Vector2d(mesh.corner_uv(corner, 0), mesh.corner_uv(corner, 1));
+    };
+    const Eigen::Vector2d to_next = uv(c + 1) - uv(c), to_prev = uv(c + 3) - uv(c);
+    const double norms = to_next.norm() * to_prev.norm();
+    if (!(norms > 0)) return std::nullopt;
+    const double angle = std::acos(std::clamp(to_next.dot(to_prev) / norms, -1.0, 1.0));
+    worst = std::max(worst, std::abs(angle * 180.0 / std::numbers::pi - 90.0));
+  }
+  return worst;
+}
+
 double squared_edge_length(const PolyMesh& mesh, int32_t a, int32_t b) {
   return (mesh.vertices.row(a) - mesh.vertices.row(b)).squaredNorm();
 }
@@ -46,6 +70,25 @@ bool is_longest_edge(const PolyMesh& mesh, std::span<const int32_t> triangle, in
   for (int c = 0; c < 3; ++c)
     if (squared_edge_length(mesh, triangle[c], triangle[(c + 1) % 3]) > shared * (1 + 1e-6))
       return false;
+  return true;
+}
+
+/// The same in the texture's space, where a card is laid out flat as a grid of
+/// rectangles whatever it does in 3D: a triangulated quad of a twisted tube or card may be
+/// split along its shorter diagonal in 3D, never in its UV rectangle. False without UVs.
+bool is_longest_uv_edge(const PolyMesh& mesh, int64_t face, int corner) {
+  if (!mesh.has_uv()) return false;
+  const int64_t base = mesh.face_offsets[static_cast<size_t>(face)];
+  auto squared_uv_length = [&](int from) {
+    const int to = (from + 1) % 3;
+    const double du = mesh.corner_uv(base + from, 0) - mesh.corner_uv(base + to, 0);
+    const double dv = mesh.corner_uv(base + from, 1) - mesh.corner_uv(base + to, 1);
+    return du * du + dv * dv;
+  };
+  const double shared = squared_uv_length(corner);
+  if (!(shared > 0)) return false;
+  for (int c = 0; c < 3; ++c)
+    if (squared_uv_length(c) > shared * (1 + 1e-6)) return false;
   return true;
 }
 
@@ -72,7 +115,8 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
                                       mesh.face_material[static_cast<size_t>(other_face)])
         continue;  // a quad paints one image
       auto other = mesh.face(other_face);
-      if (!is_longest_edge(mesh, triangle, c) && !is_longest_edge(mesh, other, other_corner))
+      if (!is_longest_edge(mesh, triangle, c) && !is_longest_edge(mesh, other, other_corner) &&
+          !(is_longest_uv_edge(mesh, f, c) && is_longest_uv_edge(mesh, other_face, other_corner)))
         continue;
       // Shared edge a->b in this triangle (a, b, c2), b->a in the other (b, a, d):
       // the quad is (a, d, b, c2).
@@ -80,13 +124,19 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
       std::array<int32_t, 4> quad = {triangle[c], apex_other, triangle[(c + 1) % 3],
                                      triangle[(c + 2) % 3]};
       double deviation = corner_deviation_deg(mesh, quad);
-      if (deviation <= max_corner_deviation_deg)
-        candidates.push_back({deviation, f, other_face, c, other_corner});
+      if (deviation > max_corner_deviation_deg) continue;
+      const int64_t base = mesh.face_offsets[static_cast<size_t>(f)];
+      const int64_t other_base = mesh.face_offsets[static_cast<size_t>(other_face)];
+      const std::optional<double> uv_deviation = uv_corner_deviation_deg(
+          mesh,
+          {base + c, other_base + (other_corner + 2) % 3, base + (c + 1) % 3, base + (c + 2) % 3});
+      candidates.push_back(
+          {uv_deviation.value_or(deviation), deviation, f, other_face, c, other_corner});
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
-    return std::tie(x.worst_corner_deviation_deg, x.face_a, x.face_b) <
-           std::tie(y.worst_corner_deviation_deg, y.face_a, y.face_b);
+    return std::tie(x.rank_deviation_deg, x.worst_corner_deviation_deg, x.face_a, x.face_b) <
+           std::tie(y.rank_deviation_deg, y.worst_corner_deviation_deg, y.face_a, y.face_b);
   });
 
   std::vector<int64_t> partner(static_cast<size_t>(mesh.face_count()), -1);
@@ -117,7 +167,8 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
       }
     }
     recovery.mesh.append_face(face);
-    if (mesh.has_materials()) recovery.mesh.face_material.push_back(mesh.face_material[source_face]);
+    if (mesh.has_materials())
+      recovery.mesh.face_material.push_back(mesh.face_material[source_face]);
     recovery.source_face.push_back(source_face);
   };
   std::vector<int64_t> corners;

@@ -274,5 +274,28 @@ TEST(DecideOrientation, AClearAlphaFadeDecidesAfterTheHeadDistanceAndContinuatio
   EXPECT_EQ(decide_orientation(evidence, thresholds, conventions)->rule, OrientationRule::uv);
 }
 
+TEST(DecideOrientation, AFadeSpreadOverManyFacesCountsWhereTheTexturesVBacksIt) {
+  // 0.01 a face, 0.8 from one end of the rails to the other: too faint per face for the
+  // fade alone, enough along the whole rail where the texture's v convention backs it
+  // (paint over vertex ids).
+  OrientationThresholds thresholds;
+  OrientationEvidence evidence;
+  evidence.alpha_fade_vote = 0.95;
+  evidence.alpha_fade_mean_fall = 0.01;
+  evidence.alpha_fade_rail_fall = 0.8;
+  EXPECT_FALSE(alpha_fade_decides(evidence, thresholds, false));
+  EXPECT_TRUE(alpha_fade_decides(evidence, thresholds, true));
+  evidence.alpha_fade_rail_fall = 0.1;  // a faint fade along the rail too
+  EXPECT_FALSE(alpha_fade_decides(evidence, thresholds, true));
+  evidence.alpha_fade_rail_fall = 0.8;
+  evidence.alpha_fade_vote = 0.4;  // split
+  EXPECT_FALSE(alpha_fade_decides(evidence, thresholds, true));
+  // The fade alone still asks the fall per face.
+  evidence.alpha_fade_vote = 0.95;
+  evidence.uv_growth = 0.9;
+  EXPECT_EQ(decide_orientation(evidence, thresholds, MeshConventions{true, 1})->rule,
+            OrientationRule::uv);
+}
+
 }  // namespace
 }  // namespace hair

@@ -42,8 +42,8 @@ TEST(RailPaint, TheFamilyAlongThePaintIsFoundWhereTheOtherIsLonger) {
 
   // Paint at 45 degrees lies along neither: the paint does not decide.
   PaintedFlow diagonal = uniform_flow(mesh, Eigen::Vector3f(1, 1, 0), 0.0f);
-  EXPECT_EQ(family_along_paint(family_paint(mesh, diagonal, EdgeFaces(mesh), topologies)[0][0],
-                               0.5, 0.25),
+  EXPECT_EQ(family_along_paint(family_paint(mesh, diagonal, EdgeFaces(mesh), topologies)[0][0], 0.5,
+                               0.25),
             -1);
   // Nor does paint that is not clear.
   flow.coherence.assign(flow.coherence.size(), 0.1f);
@@ -68,6 +68,27 @@ TEST(RailPaint, TheAlphaFadeVotesForTheRailsRunningTowardsTheTips) {
   // Without a fade the vote stays 0.
   PaintedFlow flat = uniform_flow(mesh, Eigen::Vector3f(0, -1, 0), 0.0f);
   EXPECT_EQ(rails_alpha_fade(mesh, flat, edge_faces, {down}).vote, 0.0);
+}
+
+TEST(RailPaint, TheFallAlongAWholeRailIsTheSameHoweverFinelyTheCardIsCut) {
+  // The same 6 cm card fading by 1.2 from one end to the other, cut into 6 faces along
+  // its length and into 24: the fall per face drops fourfold, the fall along the rail
+  // does not (a tube or a finely cut card fades by little per face).
+  for (int faces_along : {6, 24}) {
+    SCOPED_TRACE(faces_along);
+    PolyMesh mesh = flat_grid(2, faces_along, 0.02f, 0.06f);
+    EdgeFaces edge_faces(mesh);
+    std::vector<std::vector<int32_t>> rails(2);
+    for (int j = faces_along; j >= 0; --j) {
+      rails[0].push_back(j * 3 + 1);  // the middle column, top down
+      rails[1].push_back(j * 3 + 2);  // the right edge
+    }
+    PaintedFlow flow = uniform_flow(mesh, Eigen::Vector3f(0, -1, 0), 1.2f / faces_along);
+    AlphaFade fade = rails_alpha_fade(mesh, flow, edge_faces, rails);
+    EXPECT_NEAR(fade.mean_fall, 1.2 / faces_along, 1e-6);
+    EXPECT_EQ(fade.judged_rails, 2);
+    EXPECT_NEAR(fade.mean_rail_fall, 1.2, 1e-5);
+  }
 }
 
 }  // namespace

@@ -130,6 +130,61 @@ TEST(QuadRecovery, TriangulatedGridPairsBackIntoItsQuads) {
   EXPECT_EQ(topology.regions[0].families[longer_family(topology.regions[0])].chains.size(), 3u);
 }
 
+/// A card one quad wide whose right rail runs a quad's height above its left (a card
+/// twisted or sheared in 3D, as a ringlet's tube is), each quad split along the diagonal
+/// that is the shorter in 3D, with the texture laid flat: a grid of rectangles in UV.
+PolyMesh sheared_triangulated_strip(int quads, bool with_uv) {
+  const float width = 0.01f, height = 0.006f;
+  PolyMesh mesh;
+  mesh.vertices.resize(2 * (quads + 1), 3);
+  for (int j = 0; j <= quads; ++j) {
+    mesh.vertices.row(2 * j) << 0, j * height, 0;                // left
+    mesh.vertices.row(2 * j + 1) << width, (j + 1) * height, 0;  // right, one quad up
+  }
+  std::vector<float> uv;
+  auto add = [&](std::array<int32_t, 3> corners) {
+    mesh.append_face(std::vector<int32_t>(corners.begin(), corners.end()));
+    for (int32_t v : corners) {
+      uv.push_back(static_cast<float>(v % 2));
+      uv.push_back(static_cast<float>(v / 2) / static_cast<float>(quads));
+    }
+  };
+  for (int j = 0; j < quads; ++j) {
+    const int32_t left = 2 * j, right = 2 * j + 1, next_left = 2 * j + 2, next_right = 2 * j + 3;
+    add({left, right, next_left});        // split along right-next_left, the shorter
+    add({right, next_right, next_left});  // diagonal (0.01 m against 0.016 m)
+  }
+  if (with_uv)
+    mesh.corner_uv = Eigen::Map<Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
+  return mesh;
+}
+
+TEST(QuadRecovery, ACardShearedIn3DPairsBackByItsTexturesRectangles) {
+  // In 3D the diagonal the triangulation added is no triangle's longest edge, and the
+  // triangles across each rung make quads as near to square: by 3D alone the pairs
+  // straddle the rungs. In UV the card's quads are rectangles: every pair is found.
+  QuadRecovery recovered = quads_from_triangles(sheared_triangulated_strip(8, true));
+  EXPECT_EQ(recovered.triangles_paired, 16);
+  EXPECT_EQ(recovered.triangles_left, 0);
+  for (int64_t f = 0; f < recovered.mesh.face_count(); ++f) {
+    // Each quad is one of the card's: its corners two consecutive rungs.
+    std::vector<int32_t> corners(recovered.mesh.face(f).begin(), recovered.mesh.face(f).end());
+    std::sort(corners.begin(), corners.end());
+    ASSERT_EQ(corners.size(), 4u);
+    EXPECT_EQ(corners[0] % 2, 0);
+    EXPECT_EQ(corners[3], corners[0] + 3) << "face " << f;
+  }
+  // Without the texture the pairs straddle the rungs (or are not made).
+  QuadRecovery untextured = quads_from_triangles(sheared_triangulated_strip(8, false));
+  int card_quads = 0;
+  for (int64_t f = 0; f < untextured.mesh.face_count(); ++f) {
+    std::vector<int32_t> corners(untextured.mesh.face(f).begin(), untextured.mesh.face(f).end());
+    std::sort(corners.begin(), corners.end());
+    if (corners.size() == 4 && corners[0] % 2 == 0 && corners[3] == corners[0] + 3) ++card_quads;
+  }
+  EXPECT_EQ(card_quads, 0);
+}
+
 TEST(QuadRecovery, NeedleTrianglesStayTriangles) {
   PolyMesh fan;
   fan.vertices.resize(4, 3);
