@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
   p.add("scalp_cover_h", params.scalp_cover_h,
         "scalp triangles within this distance of a root-type input strand carry roots, in H",
         hair::ParamRange::above(0));
+  p.add("standing_cover_h", params.standing_cover_h,
+        "...but where that strand stands off the scalp (over 45 degrees), only within this "
+        "distance of it along the scalp (a spike grows from its base), in H",
+        hair::ParamRange::above(0));
   p.add("step_h", params.step_h, "growing step, in H", hair::ParamRange::closed(0.001, 0.1));
   p.add("field_voxel_h", params.field_voxel_h, "orientation-field voxel size, in H",
         hair::ParamRange::closed(0.002, 0.2));

@@ -334,6 +334,8 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
       {{extract, types, clusters, "--continued_tip_off_scalp_h", "nan"},
        "continued_tip_off_scalp_h"},
       {{extract, types, clusters, "--scalp_cover_h", "1e-6"}, "no scalp triangle"},
+      {{extract, types, clusters, "--standing_cover_h", "0"}, "standing_cover_h"},
+      {{extract, types, clusters, "--standing_cover_h", "nan"}, "standing_cover_h"},
       {{extract, types}, "CLUSTERS_H5"},
   };
   hair::test::expect_clean_failures(kBin / "grow", "grow", cases, directory / "failures",

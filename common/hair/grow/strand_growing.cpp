@@ -2,7 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -652,6 +654,19 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
   return strand;
 }
 
+/// Whether the input strand through `row` rises off a scalp triangle of unit normal
+/// `normal` at more than 45 degrees there (its segment from `row`, or into `row` at its
+/// tip): hair standing on the head, like a spike card, rather than lying on it.
+bool stands_off_the_scalp(const StrandSet& strands, int64_t row, const Vec3& normal) {
+  const auto next = std::upper_bound(strands.offsets.begin(), strands.offsets.end(), row);
+  const int64_t first = *(next - 1), last = *next - 1;
+  if (last <= first) return false;
+  const int64_t from = row < last ? row : row - 1;
+  const Vec3 segment = point_of(strands.points, from + 1) - point_of(strands.points, from);
+  if (!(segment.squaredNorm() > 0) || !(normal.squaredNorm() > 0)) return false;
+  return std::abs(segment.normalized().dot(normal)) > std::sqrt(0.5);
+}
+
 }  // namespace
 
 GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
@@ -671,25 +686,51 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   // Roots: blue noise on the scalp covered by root-type strands.
   const StrandSet& strands = input.input_strands;
   std::vector<uint8_t> covered(input.scalp_triangle.size(), 0);
-  auto cover_m = static_cast<float>(params.scalp_cover_h * h);
+  const double cover_m = params.scalp_cover_h * h;
+  const double standing_cover_m = std::min(params.standing_cover_h, params.scalp_cover_h) * h;
   for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
     if (!input.scalp_triangle[static_cast<size_t>(t)]) continue;
-    Vec3 centre = Vec3::Zero();
-    for (int k = 0; k < 3; ++k) centre += point_of(input.body_vertices, input.body_triangles(t, k));
-    centre /= 3;
-    int64_t row = context.nearest_root_point(centre);
-    if ((point_of(strands.points, row) - centre).norm() <= cover_m) {
-      covered[static_cast<size_t>(t)] = 1;
-      ++result.scalp_triangles_used;
+    std::array<Vec3, 3> corner;
+    for (int k = 0; k < 3; ++k)
+      corner[static_cast<size_t>(k)] = point_of(input.body_vertices, input.body_triangles(t, k));
+    const Vec3 centre = (corner[0] + corner[1] + corner[2]) / 3;
+    const int64_t row = context.nearest_root_point(centre);
+    const Vec3 offset = point_of(strands.points, row) - centre;
+    if (offset.norm() > cover_m) continue;
+    const Vec3 normal = (corner[1] - corner[0]).cross(corner[2] - corner[0]).normalized();
+    if (stands_off_the_scalp(strands, row, normal)) {
+      // Along the scalp from the triangle (0 where the point lies over it), so that the
+      // triangle under a spike's base carries roots however coarse the scalp.
+      const Vec3 point = point_of(strands.points, row);
+      const Vec3 from_triangle =
+          point - closest_point_on_triangle(point, corner[0], corner[1], corner[2]);
+      if ((from_triangle - from_triangle.dot(normal) * normal).norm() > standing_cover_m) continue;
     }
+    covered[static_cast<size_t>(t)] = 1;
+    ++result.scalp_triangles_used;
   }
+  // Within a covered triangle, a root beside a standing strand lies within
+  // standing_cover_h of it along the scalp (the triangles are coarser than that).
+  const auto triangle_normal = [&](int32_t t) {
+    const Vec3 a = point_of(input.body_vertices, input.body_triangles(t, 0));
+    return Vec3((point_of(input.body_vertices, input.body_triangles(t, 1)) - a)
+                    .cross(point_of(input.body_vertices, input.body_triangles(t, 2)) - a)
+                    .normalized());
+  };
+  const SampleAcceptance standing_base_only = [&](const Vec3& root, int32_t t) {
+    const int64_t row = context.nearest_root_point(root);
+    const Vec3 normal = triangle_normal(t);
+    if (!stands_off_the_scalp(strands, row, normal)) return true;
+    const Vec3 offset = point_of(strands.points, row) - root;
+    return (offset - offset.dot(normal) * normal).norm() <= standing_cover_m;
+  };
   if (result.scalp_triangles_used == 0)
     throw Error::bad_input(input.source,
                            "no scalp triangle lies under a root-type input strand: nothing to "
                            "grow from (is scalp_cover_h too small?)");
   SurfaceSamples roots =
       poisson_disk_samples(input.body_vertices, input.body_triangles, covered, params.strand_count,
-                           static_cast<uint64_t>(params.seed));
+                           static_cast<uint64_t>(params.seed), 5, standing_base_only);
   result.scalp_area_m2 = roots.area_m2;
   result.root_spacing_m = roots.min_spacing_m;
   auto root_count = static_cast<int64_t>(roots.positions.rows());

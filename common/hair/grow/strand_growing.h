@@ -27,6 +27,10 @@ struct GrowParams {
   /// Scalp triangles (extract.h5 /body/scalp_triangle) whose centre lies within this
   /// distance of a point of a root-type input strand carry roots.
   double scalp_cover_h = 0.05;
+  /// ...but where that point's strand stands off the scalp (rises at more than 45 degrees
+  /// to the triangle), only within this distance of it along the scalp: a card standing on
+  /// the head (a spike, a mohawk) grows from its base, not from a disc around it.
+  double standing_cover_h = 0.02;
   double step_h = 0.02;         ///< growing step (RK2 along the field, or along a strand)
   double field_voxel_h = 0.02;  ///< orientation-field grid spacing
   double field_band_h = 0.06;   ///< the field reaches this far from its cluster's strands

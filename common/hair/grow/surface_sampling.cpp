@@ -96,16 +96,26 @@ Region selected_region(const Points3f& vertices, const Triangles3i& triangles,
 struct Candidates {
   Points3f positions;
   std::vector<int32_t> triangle;
+  int64_t draws = 0;  ///< points drawn, those `accept` refused included
 };
 
+/// Draws per candidate wanted after which an acceptance that refuses them all gives up.
+constexpr int64_t kMaxDrawsPerCandidate = 1000;
+
 Candidates uniform_candidates(const Points3f& vertices, const Triangles3i& triangles,
-                              const Region& region, int64_t count, uint64_t seed) {
+                              const Region& region, int64_t count, uint64_t seed,
+                              const SampleAcceptance& accept) {
   std::mt19937_64 random(seed);
   Candidates candidates;
   candidates.positions.resize(count, 3);
   candidates.triangle.resize(static_cast<size_t>(count));
   const double area_m2 = region.area_m2();
-  for (int64_t i = 0; i < count; ++i) {
+  for (int64_t i = 0; i < count;) {
+    if (++candidates.draws > kMaxDrawsPerCandidate * count)
+      throw Error::bad_input(
+          "", "surface sampling: no point of the selected triangles is accepted (" +
+                  std::to_string(i) + " of " + std::to_string(count) + " candidates in " +
+                  std::to_string(candidates.draws - 1) + " draws)");
     double target_m2 = uniform01(random) * area_m2;
     auto entry = static_cast<size_t>(
         std::upper_bound(region.cumulative_m2.begin(), region.cumulative_m2.end(), target_m2) -
@@ -117,8 +127,10 @@ Candidates uniform_candidates(const Points3f& vertices, const Triangles3i& trian
     Eigen::Vector3d point = (1 - s) * corner(vertices, triangles, t, 0) +
                             s * (1 - u) * corner(vertices, triangles, t, 1) +
                             s * u * corner(vertices, triangles, t, 2);
+    if (accept && !accept(point, t)) continue;
     candidates.positions.row(i) = point.cast<float>().transpose();
     candidates.triangle[static_cast<size_t>(i)] = t;
+    ++i;
   }
   return candidates;
 }
@@ -312,13 +324,16 @@ double max_poisson_disk_radius_m(double area_m2, int64_t count) {
 
 SurfaceSamples poisson_disk_samples(const Points3f& vertices, const Triangles3i& triangles,
                                     const std::vector<uint8_t>& use_triangle, int64_t count,
-                                    uint64_t seed, int candidate_factor) {
+                                    uint64_t seed, int candidate_factor,
+                                    const SampleAcceptance& accept) {
   Region region = selected_region(vertices, triangles, use_triangle, count, candidate_factor);
   const int64_t candidate_count = count * candidate_factor;
-  Candidates candidates = uniform_candidates(vertices, triangles, region, candidate_count, seed);
+  Candidates candidates =
+      uniform_candidates(vertices, triangles, region, candidate_count, seed, accept);
 
   SurfaceSamples samples;
-  samples.area_m2 = region.area_m2();
+  samples.area_m2 = region.area_m2() * static_cast<double>(candidate_count) /
+                    static_cast<double>(candidates.draws);
   samples.max_radius_m = max_poisson_disk_radius_m(samples.area_m2, count);
   const double radius_m = 2 * samples.max_radius_m;  // the neighbourhood of the weights
   candidates = spatially_ordered(candidates, radius_m);

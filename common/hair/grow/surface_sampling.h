@@ -1,6 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "hair/core/strand_set.h"              // Points3f (row-major n x 3 float)
@@ -54,13 +56,21 @@ double max_poisson_disk_radius_m(double area_m2, int64_t count);
 /// @param seed          random seed
 /// @param candidate_factor  candidates drawn per sample (>= 1; 1 means plain uniform
 ///                      samples, 3-5 is Yuksel's range, more costs time for little gain)
+/// @param accept        if given, where on the triangles samples may lie: a candidate
+///                      point (and its triangle) it refuses is drawn again, so that the
+///                      samples spread over the accepted part of the triangles only; the
+///                      area (and r_max) is that of the selected triangles times the share
+///                      of draws accepted
 ///
 /// Throws hair::Error: usage for count < 1, candidate_factor < 1, more than 2^26
 /// candidates, use_triangle of the wrong size; bad_input for no triangle selected, a
 /// selected triangle with a vertex id out of range or a non-finite vertex, a selected
-/// area that is zero or not finite.
+/// area that is zero or not finite, or `accept` refusing every one of 1000 draws per
+/// candidate wanted.
+using SampleAcceptance = std::function<bool(const Eigen::Vector3d& point, int32_t triangle)>;
 SurfaceSamples poisson_disk_samples(const Points3f& vertices, const Triangles3i& triangles,
                                     const std::vector<uint8_t>& use_triangle, int64_t count,
-                                    uint64_t seed, int candidate_factor = 5);
+                                    uint64_t seed, int candidate_factor = 5,
+                                    const SampleAcceptance& accept = {});
 
 }  // namespace hair

@@ -505,6 +505,62 @@ TEST(StrandGrowing, StrandsLeavingTheirClusterReachATailThatHangsOffTheScalp) {
 /// Height of `p` above the sphere.
 double height_above_sphere(const Vec3& p) { return (p - kCentre).norm() - kRadius; }
 
+// A spike card standing on the crown (a mohawk's): 5 rails 4 mm apart across x, each
+// rising straight up (+y) from 2 mm above the sphere's top for 6 cm, one root-free group.
+// Its strands grow from its base: roots within standing_cover_h (0.02 H, 4.8 mm) of its
+// rails across the card, though the sphere's triangles are 7 mm across, where the old
+// rule (whole triangles within scalp_cover_h, 12 mm, of any rail point) spread them over a
+// disc round the base and they grew up beside the card.
+TEST(StrandGrowing, ASpikeStandingOnTheHeadGrowsFromItsBaseNotADiscAroundIt) {
+  GrowInput input;
+  icosphere(4, input.body_vertices, input.body_triangles);
+  input.scalp_triangle =
+      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
+  input.head_height_m = kHeadHeight;
+  input.source = "sphere";
+  std::vector<Points3f> rails;
+  for (int k = 0; k < 5; ++k) {
+    const Vec3 base = kCentre + (kRadius + 0.002) * kUp + (0.004 * k - 0.008) * Vec3::UnitX();
+    rails.push_back(straight_rail(base, kUp, 0.06));
+  }
+  input.input_strands = strand_set_from_polylines(rails);
+  input.input_strands.strand_attributes["group"] = std::vector<int32_t>(5, 0);
+  input.group_type = {GroupType::root_free};
+  input.group_cluster = {0};
+
+  // Across the card (z) at the roots, and of the grown points off the root: the mean.
+  const auto across = [](const GrowResult& result) {
+    double roots = 0, points = 0;
+    int64_t point_count = 0;
+    const StrandSet& strands = result.strands;
+    for (int64_t s = 0; s < strands.strand_count(); ++s) {
+      roots += std::abs(root_of(strands, s).z());
+      for (int64_t row = strands.offsets[s] + 1; row < strands.offsets[s + 1]; ++row, ++point_count)
+        points += std::abs(strands.points(row, 2));
+    }
+    return std::pair{roots / static_cast<double>(strands.strand_count()),
+                     points / static_cast<double>(point_count)};
+  };
+  const GrowResult standing = grow_strands(input, params_with(kStrandCount));
+  GrowParams disc = params_with(kStrandCount);
+  disc.standing_cover_h = disc.scalp_cover_h;
+  const GrowResult around = grow_strands(input, disc);
+  const auto [standing_roots_m, standing_points_m] = across(standing);
+  const auto [disc_roots_m, disc_points_m] = across(around);
+  std::printf(
+      "[ grow     ] spike: roots %.1f mm across the card on average, grown points %.1f mm "
+      "(standing_cover_h as scalp_cover_h, a disc round its base: %.1f and %.1f mm); %lld and "
+      "%lld scalp triangles\n",
+      1e3 * standing_roots_m, 1e3 * standing_points_m, 1e3 * disc_roots_m, 1e3 * disc_points_m,
+      static_cast<long long>(standing.scalp_triangles_used),
+      static_cast<long long>(around.scalp_triangles_used));
+  for (int64_t s = 0; s < standing.strands.strand_count(); ++s)
+    EXPECT_LE(std::abs(root_of(standing.strands, s).z()), 0.0050);
+  EXPECT_LT(standing.scalp_triangles_used, around.scalp_triangles_used);
+  EXPECT_LT(standing_roots_m, 0.6 * disc_roots_m);
+  EXPECT_LT(standing_points_m, 0.6 * disc_points_m);
+}
+
 // Layers: card 0 gets an outer layer, its rails copied 14 mm above the sphere (the inner
 // ones lie 4 mm above it), a group of its own in the same cluster. With layers, the
 // strands rooted under the card split between the two heights; without, the field from

@@ -234,6 +234,36 @@ TEST(SurfaceSampling, DegenerateTrianglesAreNeverDrawn) {
     EXPECT_NEAR(s.normals(i, 1), 1.0, 1e-6);  // (0,0,1)-(0,0,0) x (1,0,1)-(0,0,0) is +y
 }
 
+TEST(SurfaceSampling, AnAcceptanceKeepsTheSamplesOnItsPartOfTheTriangles) {
+  // The cap's triangles, the samples accepted only at x > 0.2 (cutting triangles through):
+  // all of them there, as many, still blue noise over that part, whose area is estimated
+  // from the share of draws accepted. Without an acceptance, nothing changes.
+  Mesh sphere = icosphere(5);
+  const std::vector<uint8_t> use = upper_cap(sphere);
+  const SampleAcceptance east = [](const Eigen::Vector3d& p, int32_t) { return p.x() > 0.2; };
+  const SurfaceSamples all = poisson_disk_samples(sphere.vertices, sphere.triangles, use, 2000, 5);
+  const SurfaceSamples part =
+      poisson_disk_samples(sphere.vertices, sphere.triangles, use, 2000, 5, 5, east);
+  ASSERT_EQ(part.positions.rows(), 2000);
+  for (Eigen::Index i = 0; i < part.positions.rows(); ++i) ASSERT_GT(part.positions(i, 0), 0.2f);
+  double accepted = 0;
+  for (Eigen::Index i = 0; i < all.positions.rows(); ++i) accepted += all.positions(i, 0) > 0.2f;
+  EXPECT_NEAR(part.area_m2, all.area_m2 * accepted / 2000.0, 0.05 * part.area_m2);
+  EXPECT_GT(part.min_spacing_m, 1.2 * part.max_radius_m);
+  const SurfaceSamples same =
+      poisson_disk_samples(sphere.vertices, sphere.triangles, use, 2000, 5, 5, SampleAcceptance{});
+  EXPECT_EQ(same.positions, all.positions);
+  // An acceptance that refuses everything is bad input, not a hang.
+  const SampleAcceptance none = [](const Eigen::Vector3d&, int32_t) { return false; };
+  try {
+    poisson_disk_samples(sphere.vertices, sphere.triangles, use, 10, 5, 5, none);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind(), ErrorKind::bad_input);
+    EXPECT_NE(std::string(error.what()).find("no point"), std::string::npos) << error.what();
+  }
+}
+
 ErrorKind kind_of(const Mesh& mesh, const std::vector<uint8_t>& use, int64_t count,
                   int candidate_factor = 5) {
   try {

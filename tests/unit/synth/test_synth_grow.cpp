@@ -406,10 +406,10 @@ TEST(SynthGrow, PaintedPresetsAgainstTheirTruth) {
       Grown grown = grow_model(model, body, name);
       GrowScores scores = measure(model, grown.result.strands, grown.head_height_m);
       with_paint.add(scores);
-      // The mohawk misses the issue's 0.02 H on fidelity (0.020-0.022 H, the same without
-      // paint): roots are sampled on the whole scalp band the strip covers (the body within
-      // 0.06 H of the mesh), wider than the strip, and those at its sides grow beside it.
-      EXPECT_LT(scores.fidelity_mean, name == "mohawk" ? 0.025 : 0.02);
+      // The mohawk's spikes grow from their base (standing_cover_h): 0.0149 H over its
+      // seeds; 0.0214 H when whole scalp triangles round the base carried roots and the
+      // strands rooted at their sides grew up beside the card.
+      EXPECT_LT(scores.fidelity_mean, 0.02);
       EXPECT_LT(scores.coverage_mean, 0.02);
       EXPECT_LT(scores.far_share, 0.005);
       // Grown along the true flow, the issue asks 85%. low_tail misses it (0.76-0.79,
