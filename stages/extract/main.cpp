@@ -28,9 +28,8 @@ int main(int argc, char** argv) {
     hair::PolyMesh body_mesh = hair::read_mesh(body_path, params.reader());
     const hair::PaintedTextures textures =
         hair::load_painted_textures(hair_mesh.materials, params.extract.painted_flow, hair_path);
-    hair::ExtractResult result =
-        hair::extract_strands(std::move(hair_mesh), std::move(body_mesh), params.extract,
-                              hair_path, body_path, textures);
+    hair::ExtractResult result = hair::extract_strands(
+        std::move(hair_mesh), std::move(body_mesh), params.extract, hair_path, body_path, textures);
     const hair::ExtractStats& stats = result.stats;
     const auto scalp_triangles =
         std::count(result.scalp_triangle.begin(), result.scalp_triangle.end(), 1);
@@ -39,10 +38,11 @@ int main(int argc, char** argv) {
                  result.strands.point_count(), result.head.head_height, scalp_triangles);
     spdlog::info(
         "{}: orientation rules: vertex_order {}, scalp_distance {}, continuation {}, uv {}, "
-        "height {}, parting {}, alpha_fade {} ({} regions' vertex ids overruled by their paint)",
+        "height {}, parting {}, alpha_fade {} ({} regions' vertex ids and {} continuations "
+        "overruled by their paint)",
         hair_path, stats.groups_by_rule[0], stats.groups_by_rule[1], stats.groups_by_rule[2],
         stats.groups_by_rule[3], stats.groups_by_rule[4], stats.groups_by_rule[5],
-        stats.groups_by_rule[6], stats.paint_overruled_ids);
+        stats.groups_by_rule[6], stats.paint_overruled_ids, stats.paint_overruled_continuation);
     spdlog::info(
         "{}: rails chosen by chain length in {} regions, texture axis {}, painted flow {} "
         "({} of them across the longer chains); {} patches traced along the paint",

@@ -461,8 +461,8 @@ std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& f
 /// one image for many cards. A mesh whose cards fade at either end (some at the root, to
 /// soften a hairline) has no such convention, and its ids stay. Returns how many regions
 /// it turned.
-int paint_overrules_ids(std::vector<RegionRails>& regions, const OrientationThresholds& thresholds,
-                        double min_agreement) {
+int paint_overrules(std::vector<RegionRails>& regions, const OrientationThresholds& thresholds,
+                    double min_agreement, OrientationRule overruled) {
   auto fade_decides = [&](const OrientationEvidence& e) {
     return alpha_fade_decides(e, thresholds, true) && e.uv_growth &&
            std::abs(*e.uv_growth) >= thresholds.uv_min_growth;
@@ -480,7 +480,7 @@ int paint_overrules_ids(std::vector<RegionRails>& regions, const OrientationThre
   const bool convention = *share >= min_agreement;
   int turned = 0;
   for (RegionRails& region : regions) {
-    if (!region.decision || region.decision->rule != OrientationRule::vertex_order) continue;
+    if (!region.decision || region.decision->rule != overruled) continue;
     const OrientationEvidence& e = region.evidence;
     if (!fade_decides(e) || v_grows_to_fade(e) != convention) continue;
     const bool fade_reverse = *e.alpha_fade_vote < 0;
@@ -501,10 +501,12 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
   MeshConventions conventions = mesh_conventions(regions, thresholds, params);
   stats.vertex_order_trusted = conventions.trust_vertex_order;
   stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
-  stats.paint_overruled_ids =
-      paint_overrules_ids(regions, thresholds, params.convention_min_agreement);
+  stats.paint_overruled_ids = paint_overrules(regions, thresholds, params.convention_min_agreement,
+                                              OrientationRule::vertex_order);
   decide_by_continuation(vertices, regions,
                          static_cast<float>(params.continuation_radius_h * head_height_m));
+  stats.paint_overruled_continuation = paint_overrules(
+      regions, thresholds, params.convention_min_agreement, OrientationRule::continuation);
   for (RegionRails& region : regions)
     if (!region.decision)
       region.decision = decide_orientation(region.evidence, thresholds, conventions);

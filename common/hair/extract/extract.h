@@ -102,6 +102,10 @@ struct ExtractStats {
   int uv_growth_sign = 0;  ///< the mesh's texture convention: +1, -1, or 0 for none
   /// Regions whose vertex ids were overruled by their paint (v and alpha fade agreeing).
   int64_t paint_overruled_ids = 0;
+  /// Regions continuation decided whose paint said the other way twice over (the same
+  /// test), turned after continuation: continuation still runs from the regions as they
+  /// were, since on layered cards it carries a reading on too far (bob01).
+  int64_t paint_overruled_continuation = 0;
 };
 
 /// Everything extract.h5 holds (schemas/extract.json), in metres.
