@@ -654,6 +654,19 @@ GrowingStrand grow_one(const GrowingContext& context, const OrientationField* fi
   return strand;
 }
 
+/// Unit normal of body triangle `t` (right-hand rule of its vertex order).
+Vec3 triangle_normal(const GrowInput& input, Eigen::Index t) {
+  const Vec3 a = point_of(input.body_vertices, input.body_triangles(t, 0));
+  return (point_of(input.body_vertices, input.body_triangles(t, 1)) - a)
+      .cross(point_of(input.body_vertices, input.body_triangles(t, 2)) - a)
+      .normalized();
+}
+
+/// The length of `offset` along the scalp: its part across the unit `normal`.
+double along_the_scalp_m(const Vec3& offset, const Vec3& normal) {
+  return (offset - offset.dot(normal) * normal).norm();
+}
+
 /// Whether the input strand through `row` rises off a scalp triangle of unit normal
 /// `normal` at more than 45 degrees there (its segment from `row`, or into `row` at its
 /// tip): hair standing on the head, like a spike card, rather than lying on it.
@@ -697,32 +710,25 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     const int64_t row = context.nearest_root_point(centre);
     const Vec3 offset = point_of(strands.points, row) - centre;
     if (offset.norm() > cover_m) continue;
-    const Vec3 normal = (corner[1] - corner[0]).cross(corner[2] - corner[0]).normalized();
+    const Vec3 normal = triangle_normal(input, t);
     if (stands_off_the_scalp(strands, row, normal)) {
       // Along the scalp from the triangle (0 where the point lies over it), so that the
       // triangle under a spike's base carries roots however coarse the scalp.
       const Vec3 point = point_of(strands.points, row);
       const Vec3 from_triangle =
           point - closest_point_on_triangle(point, corner[0], corner[1], corner[2]);
-      if ((from_triangle - from_triangle.dot(normal) * normal).norm() > standing_cover_m) continue;
+      if (along_the_scalp_m(from_triangle, normal) > standing_cover_m) continue;
     }
     covered[static_cast<size_t>(t)] = 1;
     ++result.scalp_triangles_used;
   }
   // Within a covered triangle, a root beside a standing strand lies within
   // standing_cover_h of it along the scalp (the triangles are coarser than that).
-  const auto triangle_normal = [&](int32_t t) {
-    const Vec3 a = point_of(input.body_vertices, input.body_triangles(t, 0));
-    return Vec3((point_of(input.body_vertices, input.body_triangles(t, 1)) - a)
-                    .cross(point_of(input.body_vertices, input.body_triangles(t, 2)) - a)
-                    .normalized());
-  };
   const SampleAcceptance standing_base_only = [&](const Vec3& root, int32_t t) {
     const int64_t row = context.nearest_root_point(root);
-    const Vec3 normal = triangle_normal(t);
-    if (!stands_off_the_scalp(strands, row, normal)) return true;
-    const Vec3 offset = point_of(strands.points, row) - root;
-    return (offset - offset.dot(normal) * normal).norm() <= standing_cover_m;
+    const Vec3 normal = triangle_normal(input, t);
+    return !stands_off_the_scalp(strands, row, normal) ||
+           along_the_scalp_m(point_of(strands.points, row) - root, normal) <= standing_cover_m;
   };
   if (result.scalp_triangles_used == 0)
     throw Error::bad_input(input.source,
