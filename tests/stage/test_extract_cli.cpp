@@ -220,6 +220,11 @@ TEST_F(ExtractCli, ParameterOutOfRange) {
   const std::string hair = input("hair.obj", std::string(kQuadVertices) + "f 1 2 3 4\n");
   expect_clean_failure({hair, "--body", body_, "-o", "out.h5", "--unit_scale", "-1"},
                        {"unit_scale", "-1"});
+  // The fade's fall along a whole rail, 0 to 1 from end to end, must be above 0.
+  expect_clean_failure({hair, "--body", body_, "-o", "out.h5", "--alpha_fade_min_rail_fall", "0"},
+                       {"alpha_fade_min_rail_fall"});
+  expect_clean_failure({hair, "--body", body_, "-o", "out.h5", "--alpha_fade_min_rail_fall", "nan"},
+                       {"alpha_fade_min_rail_fall"});
 }
 
 TEST_F(ExtractCli, FailureLeavesExistingOutputUntouched) {
@@ -254,8 +259,8 @@ TEST_F(ExtractCli, BrokenTextureIsAWarningNotAFailure) {
   // Texture coordinates: u across each card, v down it.
   for (int card = 0; card < 2; ++card)
     for (int row = 0; row < 9; ++row)
-      for (int side = 0; side < 2; ++side) obj += "vt " + std::to_string(side) + " " +
-                                                 std::to_string(1 - row / 8.0) + "\n";
+      for (int side = 0; side < 2; ++side)
+        obj += "vt " + std::to_string(side) + " " + std::to_string(1 - row / 8.0) + "\n";
   std::istringstream lines(cards);
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("f ", 0) == 0) {  // f a b c d -> f a/a b/b c/c d/d
@@ -270,8 +275,8 @@ TEST_F(ExtractCli, BrokenTextureIsAWarningNotAFailure) {
     input("cards.mtl", std::string("newmtl hair\nmap_Kd ") + texture + "\n");
     input("empty.png", "");
     input("words.png", "this is not a picture\n");
-    const CommandResult result = extract({"cards.obj", "--body", body_, "--unit_scale", "0.1",
-                                          "-o", "out.h5", "--threads", "1"});
+    const CommandResult result = extract(
+        {"cards.obj", "--body", body_, "--unit_scale", "0.1", "-o", "out.h5", "--threads", "1"});
     ASSERT_EQ(result.exit_code, 0) << texture << ": " << describe(result);
     int warnings = 0;
     for (const std::string& line : text_lines(result.err))
