@@ -145,6 +145,11 @@ std::vector<float> moved_guides(
   return points;
 }
 
+/// The guides' points at rest (the head still).
+std::vector<float> guides_at_rest(const Scene& scene) {
+  return moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
+}
+
 Vec3 row_of(const std::vector<float>& points, int64_t row) {
   return Vec3(points[3 * row], points[3 * row + 1], points[3 * row + 2]);
 }
@@ -316,8 +321,7 @@ TEST(StrandInterpolation, AStrandFollowsNoGuideFarShorterThanItWhereALongerOneIs
 TEST(StrandInterpolation, AtRestReproducesTheGrownStrands) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
-  std::vector<float> guide_points =
-      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
+  std::vector<float> guide_points = guides_at_rest(scene);
   std::vector<float> points;
   interpolate_frame(binding, scene.strands, {guide_points.data(), scene.wisp_rest.data(), {}},
                     points);
@@ -400,8 +404,7 @@ TEST(StrandInterpolation, StrandsFollowTheirGuides) {
 TEST(StrandInterpolation, BraidedPointsFollowTheirTetrahedra) {
   Scene scene = make_scene();
   StrandBinding binding = bind_strands(scene.strands, scene.guides, {});
-  std::vector<float> guide_points =
-      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
+  std::vector<float> guide_points = guides_at_rest(scene);
   // The wisp's tetrahedra carried 3 cm along -Z, the head still.
   std::vector<float> wisp = scene.wisp_rest;
   wisp[2] -= 0.03f;
@@ -466,6 +469,20 @@ void set_rotation(std::vector<float>& wisp, size_t t, const Eigen::Quaterniond& 
   wisp[7 * t + 6] = static_cast<float>(rotation.z());
 }
 
+/// The turn of a swinging braid's top: 0.5 rad about Z.
+Eigen::Quaterniond braid_swing() {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
+}
+
+/// The wisp at rest but for tetrahedron `t`, turned by braid_swing() and its origin moved
+/// `shift_m` along `axis` (0: X, 1: Y, 2: Z).
+std::vector<float> turned_wisp(const Scene& scene, size_t t, size_t axis, float shift_m) {
+  std::vector<float> wisp = scene.wisp_rest;
+  wisp[7 * t + axis] += shift_m;
+  set_rotation(wisp, t, braid_swing());
+  return wisp;
+}
+
 TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
   // A strand over the cap (20 points 5 mm apart, fixed) that runs on into a braid (6 points
   // bound to a third wisp tetrahedron), as grow makes of a cap feeding a braid. The
@@ -494,12 +511,8 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
     scene.guides.binding_tetrahedron.push_back(2);
     scene.guides.binding_local_m.push_back((points[static_cast<size_t>(i)] - origin).cast<float>());
   }
-  std::vector<float> wisp = scene.wisp_rest;
-  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
-  wisp[16] -= 0.03f;
-  set_rotation(wisp, 2, turn);
-  const std::vector<float> guide_points =
-      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
+  std::vector<float> wisp = turned_wisp(scene, 2, 2, -0.03f);
+  const std::vector<float> guide_points = guides_at_rest(scene);
 
   InterpolationParams held_up_to_the_braid;
   held_up_to_the_braid.wisp_bridge_length_m = 0;
@@ -531,7 +544,7 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
   const Vec3 moved_origin = origin - Vec3(0, 0, 0.03);
   for (int i = 20; i < 26; ++i)
     EXPECT_LT((row_of(bridged, begin + i) -
-               (moved_origin + turn * (points[static_cast<size_t>(i)] - origin)))
+               (moved_origin + braid_swing() * (points[static_cast<size_t>(i)] - origin)))
                   .norm(),
               1e-5);
 }
@@ -560,12 +573,8 @@ TEST(StrandInterpolation, ABraidedStrandBendsAtASeamBetweenTetrahedraNotTears) {
     scene.guides.binding_local_m.push_back(
         (points[static_cast<size_t>(i)] - (second ? second_origin : first_origin)).cast<float>());
   }
-  std::vector<float> wisp = scene.wisp_rest;
-  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
-  wisp[21] += 0.02f;
-  set_rotation(wisp, 3, turn);
-  const std::vector<float> guide_points =
-      moved_guides(scene, [](const Vec3& p, const Vec3&) -> Vec3 { return p; });
+  std::vector<float> wisp = turned_wisp(scene, 3, 0, 0.02f);
+  const std::vector<float> guide_points = guides_at_rest(scene);
 
   InterpolationParams apart;
   apart.wisp_seam_length_m = 0;
@@ -598,7 +607,7 @@ TEST(StrandInterpolation, ABraidedStrandBendsAtASeamBetweenTetrahedraNotTears) {
   const Vec3 moved = second_origin + Vec3(0.02, 0, 0);
   for (int i : {12, 13, 14, 15})
     EXPECT_LT((row_of(blended, begin + i) -
-               (moved + turn * (points[static_cast<size_t>(i)] - second_origin)))
+               (moved + braid_swing() * (points[static_cast<size_t>(i)] - second_origin)))
                   .norm(),
               1e-6);
 }
