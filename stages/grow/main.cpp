@@ -61,6 +61,11 @@ int main(int argc, char** argv) {
         "where the hair continues into a cluster that does not start at the root (a tail after "
         "its band), a strand whose card ends before it joins the nearest card running its way "
         "into it (false: it ends with its card)");
+  p.add("gather_along_field_h", params.gather_along_field_h,
+        "a strand of a cap gathered into a band whose card ends on the cap goes on along its "
+        "cluster's field by at most this far, until a tail or braid after the band is within "
+        "reach, in H (0: it ends with its card)",
+        hair::ParamRange::at_least(0));
   p.add("follow_radius_h", params.follow_radius_h,
         "a strand following an input strand is lost farther than this from its group, in H",
         hair::ParamRange::above(0));

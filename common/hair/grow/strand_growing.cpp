@@ -141,6 +141,12 @@ class GrowingContext {
         break;
       }
     }
+    for (size_t g = 0; g < group_feeds_continuation_.size(); ++g) {
+      if (!group_feeds_continuation_[g]) continue;
+      const auto c = static_cast<size_t>(input_.group_cluster[g]);
+      if (cluster_feeds_continuation_.size() <= c) cluster_feeds_continuation_.resize(c + 1, 0);
+      cluster_feeds_continuation_[c] = 1;
+    }
 
     // Strands whose tip hangs off the scalp: farther than continued_tip_off_scalp_h from
     // the centre of every scalp triangle (next_entry()).
@@ -192,6 +198,11 @@ class GrowingContext {
   int32_t group_of_strand(int64_t s) const { return strand_group_[static_cast<size_t>(s)]; }
   int32_t cluster_of_group(int32_t group) const {
     return input_.group_cluster[static_cast<size_t>(group)];
+  }
+  /// Whether a group of `cluster` feeds a continuation (a cap gathered into a band).
+  bool cluster_feeds_continuation(int32_t cluster) const {
+    return cluster >= 0 && static_cast<size_t>(cluster) < cluster_feeds_continuation_.size() &&
+           cluster_feeds_continuation_[static_cast<size_t>(cluster)] != 0;
   }
   bool cluster_starts_at_root(int32_t cluster) const {
     const auto& starts = input_.cluster_starts_at_root;
@@ -315,10 +326,12 @@ class GrowingContext {
 
   /// The best input strand to continue into from `point` going `direction`, among
   /// strands of groups not yet visited and not of `excluded_cluster`: the nearest entry
-  /// (weighted by how much it turns), from `preferred_cluster` if any qualifies.
+  /// (weighted by how much it turns), from `preferred_cluster` if any qualifies; with
+  /// `hanging_continuations_only`, only the start of a tail or braid after its band.
   std::optional<StrandEntry> next_entry(const Vec3& point, const Vec3& direction,
                                         const std::vector<int32_t>& visited_groups,
-                                        int32_t preferred_cluster, int32_t excluded_cluster) const {
+                                        int32_t preferred_cluster, int32_t excluded_cluster,
+                                        bool hanging_continuations_only = false) const {
     const StrandSet& strands = input_.input_strands;
     double radius_m = params_.continue_radius_h * h_;
     double search_m = std::max(radius_m, params_.continued_root_radius_h * h_);
@@ -343,6 +356,9 @@ class GrowingContext {
           !entry.backward && !cluster_starts_at_root(cluster_of_strand(entry.strand)) &&
           (continues_another(entry.strand) ||
            (leaving_roots && hangs_off_scalp_[static_cast<size_t>(entry.strand)]));
+      if (hanging_continuations_only &&
+          !(into_continuation && hangs_off_scalp_[static_cast<size_t>(entry.strand)]))
+        continue;
       double reach_m = into_continuation ? search_m : radius_m;
       if ((point_of(strands.points, entry.backward ? strands.offsets[entry.strand + 1] - 1
                                                    : strands.offsets[entry.strand]) -
@@ -431,8 +447,9 @@ class GrowingContext {
   /// Per input strand: whether its tip hangs off the scalp (next_entry()).
   std::vector<uint8_t> hangs_off_scalp_;
   std::unique_ptr<PointIndex> entry_index_;
-  std::unique_ptr<PointIndex> all_index_;          ///< every input point, by row
-  std::vector<uint8_t> group_feeds_continuation_;  ///< per group
+  std::unique_ptr<PointIndex> all_index_;            ///< every input point, by row
+  std::vector<uint8_t> group_feeds_continuation_;    ///< per group
+  std::vector<uint8_t> cluster_feeds_continuation_;  ///< per cluster: one of its groups does
   std::vector<double> length_to_tip_m_;
   std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
   std::vector<double> height_m_;                         ///< per input point, with layers
@@ -467,192 +484,276 @@ struct GrowingStrand {
   int blocked_steps = 0;       ///< steps in a row that hardly advanced
 };
 
-/// Grows one strand from `root`. `field` is its cluster's orientation field (null when the
-/// cluster has none); `reference_row` the input-strand point nearest the root.
-GrowingStrand grow_one(const GrowingContext& context, const OrientationField* field,
-                       const BodySdf& body, const Vec3& root, int32_t root_cluster,
-                       int64_t reference_row) {
-  const GrowParams& params = context.params();
-  double h = context.input().head_height_m;
-  double step_m = params.step_h * h, clearance_m = params.body_clearance_h * h;
-  double lost_m = params.follow_radius_h * h, keep_m = params.follow_keep_h * h;
-  GrowingStrand strand;
-  auto add_point = [&](Vec3 point, GrowRule rule, int32_t cluster, int32_t group) {
-    if (rule != GrowRule::root && body.push_out(point, clearance_m)) ++strand.pushed_out;
-    strand.points.push_back(point);
-    strand.rules.push_back(rule);
-    strand.clusters.push_back(cluster);
-    strand.groups.push_back(group);
-    strand.ended_at_body = false;
-  };
-  add_point(root, GrowRule::root, root_cluster, -1);
-  // After add_point(): did the steps up to this one from `from` along `along` run into the
-  // body (kBlockedAdvance, kBlockedSteps)? Then those steps are taken back, and the strand
-  // ends at the body unless it goes on another way.
-  auto ran_into_body = [&](const Vec3& from, const Vec3& along) {
-    if ((strand.points.back() - from).dot(along) >= kBlockedAdvance * step_m) {
-      strand.blocked_steps = 0;
+/// Grows one strand from its root (grow()): along its cluster's field, then along input
+/// strands group after group, bridged from one to the next.
+class StrandGrower {
+ public:
+  /// `field` is the root cluster's orientation field (null when the cluster has none).
+  StrandGrower(const GrowingContext& context, const OrientationField* field, const BodySdf& body,
+               int32_t root_cluster)
+      : context_(context),
+        params_(context.params()),
+        field_(field),
+        body_(body),
+        root_cluster_(root_cluster),
+        step_m_(params_.step_h * context.input().head_height_m),
+        clearance_m_(params_.body_clearance_h * context.input().head_height_m),
+        lost_m_(params_.follow_radius_h * context.input().head_height_m),
+        keep_m_(params_.follow_keep_h * context.input().head_height_m),
+        cluster_(root_cluster) {}
+
+  /// The strand from `root`; `reference_row` is the input-strand point nearest it.
+  GrowingStrand grow(const Vec3& root, int64_t reference_row) {
+    add_point(root, GrowRule::root, root_cluster_, -1);
+    const bool left_field_early = along_field(root, reference_row);
+    start_following(root, left_field_early);
+    while (!full() && !too_long()) {
+      if (group_ >= 0) {
+        const std::optional<bool> followed = follow_step();
+        if (!followed) break;  // the rail dives into the body
+        if (*followed) continue;
+      }
+      if (direction_.squaredNorm() == 0) break;
+      if (!go_on()) break;
+    }
+    return std::move(strand_);
+  }
+
+ private:
+  void add_point(Vec3 point, GrowRule rule, int32_t cluster, int32_t group) {
+    if (rule != GrowRule::root && body_.push_out(point, clearance_m_)) ++strand_.pushed_out;
+    strand_.points.push_back(point);
+    strand_.rules.push_back(rule);
+    strand_.clusters.push_back(cluster);
+    strand_.groups.push_back(group);
+    strand_.ended_at_body = false;
+  }
+  /// Takes the strand back to its first `size` points.
+  void take_back_to(size_t size) {
+    strand_.points.resize(size);
+    strand_.rules.resize(size);
+    strand_.clusters.resize(size);
+    strand_.groups.resize(size);
+  }
+  /// After add_point(): did the steps up to this one from `from` along `along` run into
+  /// the body (kBlockedAdvance, kBlockedSteps)? Then those steps are taken back, and the
+  /// strand ends at the body unless it goes on another way.
+  bool ran_into_body(const Vec3& from, const Vec3& along) {
+    if ((strand_.points.back() - from).dot(along) >= kBlockedAdvance * step_m_) {
+      strand_.blocked_steps = 0;
       return false;
     }
-    if (++strand.blocked_steps < kBlockedSteps) return false;
-    for (; strand.blocked_steps > 0 && strand.points.size() > 1; --strand.blocked_steps) {
-      strand.points.pop_back();
-      strand.rules.pop_back();
-      strand.clusters.pop_back();
-      strand.groups.pop_back();
-    }
-    strand.blocked_steps = 0;
-    strand.ended_at_body = true;
+    if (++strand_.blocked_steps < kBlockedSteps) return false;
+    const size_t kept = strand_.points.size() > static_cast<size_t>(strand_.blocked_steps)
+                            ? strand_.points.size() - static_cast<size_t>(strand_.blocked_steps)
+                            : 1;
+    take_back_to(kept);
+    strand_.blocked_steps = 0;
+    strand_.ended_at_body = true;
     return true;
-  };
-  auto full = [&] {
-    return static_cast<int64_t>(strand.points.size()) >= params.max_points_per_strand;
-  };
-  Vec3 direction = Vec3::Zero();
+  }
+  bool full() const {
+    return static_cast<int64_t>(strand_.points.size()) >= params_.max_points_per_strand;
+  }
+  bool too_long() const {
+    return static_cast<double>(strand_.points.size() - 1) * step_m_ >
+           params_.max_length_h * context_.input().head_height_m;
+  }
 
-  // 1. Along the cluster's field.
-  bool left_field_early = false;
-  if (field && field->direction(root)) {
-    double length_limit_m = params.length_factor * context.length_to_tip_m(reference_row);
+  /// 1. Along the cluster's field from the root, as long as what remains of the reference
+  /// strand (length_factor). Whether the field ended before that (left early).
+  bool along_field(const Vec3& root, int64_t reference_row) {
+    if (!field_ || !field_->direction(root)) return false;
+    const double length_limit_m = params_.length_factor * context_.length_to_tip_m(reference_row);
     double length_m = 0;
     Vec3 point = root;
     int64_t cursor = reference_row;
     int steps_since_layer = 0;
-    left_field_early = true;
     while (!full()) {
-      if (length_m + step_m > length_limit_m) {
-        left_field_early = false;
-        break;
-      }
-      std::optional<Vec3> d1 = field->direction(point);
+      if (length_m + step_m_ > length_limit_m) return false;
+      std::optional<Vec3> d1 = field_->direction(point);
       if (!d1) break;
-      std::optional<Vec3> d2 = field->direction(point + 0.5 * step_m * *d1);
+      std::optional<Vec3> d2 = field_->direction(point + 0.5 * step_m_ * *d1);
       if (!d2) break;
-      Vec3 next = point + step_m * *d2;
-      if (context.layered() && ++steps_since_layer == kLayerEvery) {
-        // Towards the reference strand's height above the body, every kLayerEvery steps
-        // by at most layer_pull of those steps: the height and its direction from the
-        // body's signed distance field inside its band, from the exact distance beyond
-        // it (the costlier query: a third of grow's time on long01 when made every step).
-        double height_m = body.distance(next);
-        Vec3 up = Vec3::Zero();
-        if (height_m < body.band_m() - 1.5 * body.voxel_m()) {
-          up = body.gradient(next);
-        } else {
-          TriangleMeshDistance::Nearest body_point = context.body_distance().nearest(next);
-          height_m = body_point.distance;
-          if (height_m > 0) up = (next - body_point.closest_point) / height_m;
-        }
-        if (up.squaredNorm() > 0) {
-          double target_m = context.height_along(reference_row, length_m + step_m, cursor);
-          double pull_m = params.layer_pull * step_m * kLayerEvery;
-          next += up.normalized() * std::clamp(target_m - height_m, -pull_m, pull_m);
-        }
+      Vec3 next = point + step_m_ * *d2;
+      if (context_.layered() && ++steps_since_layer == kLayerEvery) {
+        next += towards_layer(next, reference_row, length_m + step_m_, cursor);
         steps_since_layer = 0;
       }
-      if (!field->contains(next)) break;
-      add_point(next, GrowRule::field, root_cluster, -1);
+      if (!field_->contains(next)) break;
+      add_point(next, GrowRule::field, root_cluster_, -1);
       // The field runs into the body here: the input strands take over, as where the
       // field ends early.
       if (ran_into_body(point, *d2)) break;
-      direction = *d2;
-      length_m += step_m;
-      point = strand.points.back();
+      direction_ = *d2;
+      length_m += step_m_;
+      point = strand_.points.back();
+    }
+    return true;
+  }
+
+  /// Towards the reference strand's height above the body at `length_m` along it, every
+  /// kLayerEvery steps by at most layer_pull of those steps: the height and its direction
+  /// from the body's signed distance field inside its band, from the exact distance beyond
+  /// it (the costlier query: a third of grow's time on long01 when made every step).
+  Vec3 towards_layer(const Vec3& next, int64_t reference_row, double length_m,
+                     int64_t& cursor) const {
+    double height_m = body_.distance(next);
+    Vec3 up = Vec3::Zero();
+    if (height_m < body_.band_m() - 1.5 * body_.voxel_m()) {
+      up = body_.gradient(next);
+    } else {
+      TriangleMeshDistance::Nearest body_point = context_.body_distance().nearest(next);
+      height_m = body_point.distance;
+      if (height_m > 0) up = (next - body_point.closest_point) / height_m;
+    }
+    if (!(up.squaredNorm() > 0)) return Vec3::Zero();
+    const double target_m = context_.height_along(reference_row, length_m, cursor);
+    const double pull_m = params_.layer_pull * step_m_ * kLayerEvery;
+    return up.normalized() * std::clamp(target_m - height_m, -pull_m, pull_m);
+  }
+
+  /// 2. The input strand to follow first.
+  void start_following(const Vec3& root, bool left_field_early) {
+    if (strand_.points.size() == 1) {
+      // No field here (a root cluster without one, or a root outside its band): start on
+      // the input strand nearest the root.
+      int32_t s = context_.strand_of_point(context_.nearest_root_point(root));
+      group_ = context_.group_of_strand(s);
+      cluster_ = context_.cluster_of_strand(s);
+      visited_.push_back(group_);
+    } else if (left_field_early) {
+      // The field ended before the strand grew as long as its input strands (the edge of
+      // the band, beside a card): go on along the closest input strand of the cluster.
+      int64_t row = context_.nearest_root_point(strand_.points.back());
+      int32_t s = context_.strand_of_point(row);
+      double min_cos = std::cos(params_.continue_max_angle_deg * std::numbers::pi / 180);
+      if (context_.cluster_of_strand(s) == root_cluster_ &&
+          (point_of(context_.input().input_strands.points, row) - strand_.points.back()).norm() <=
+              lost_m_ &&
+          context_.follow(context_.group_of_strand(s), false, strand_.points.back())
+                  .direction.dot(direction_) >= min_cos) {
+        group_ = context_.group_of_strand(s);
+        visited_.push_back(group_);
+      }
     }
   }
 
-  // 2. Along input strands, group after group.
-  std::vector<int32_t> visited;
-  int32_t group = -1, cluster = root_cluster;
-  bool backward = false;
-  if (strand.points.size() == 1) {
-    // No field here (a root cluster without one, or a root outside its band): start on
-    // the input strand nearest the root.
-    int32_t s = context.strand_of_point(context.nearest_root_point(root));
-    group = context.group_of_strand(s);
-    cluster = context.cluster_of_strand(s);
-    visited.push_back(group);
-  } else if (left_field_early) {
-    // The field ended before the strand grew as long as its input strands (the edge of
-    // the band, beside a card): go on along the closest input strand of the cluster.
-    int64_t row = context.nearest_root_point(strand.points.back());
-    int32_t s = context.strand_of_point(row);
-    double min_cos = std::cos(params.continue_max_angle_deg * std::numbers::pi / 180);
-    if (context.cluster_of_strand(s) == root_cluster &&
-        (point_of(context.input().input_strands.points, row) - strand.points.back()).norm() <=
-            lost_m &&
-        context.follow(context.group_of_strand(s), false, strand.points.back())
-                .direction.dot(direction) >= min_cos) {
-      group = context.group_of_strand(s);
-      visited.push_back(group);
+  /// One step along the group followed: true if taken; false at the group's end (lost,
+  /// drifted off its rails, or turned back); std::nullopt where its rail dives into the
+  /// body and the strand ends.
+  std::optional<bool> follow_step() {
+    const Vec3 point = strand_.points.back();
+    GrowingContext::Following following = context_.follow(group_, backward_, point);
+    bool turned_back = direction_.squaredNorm() > 0 && following.direction.dot(direction_) < 0;
+    if (following.past_end || following.distance_m > lost_m_ || turned_back) return false;
+    direction_ = following.direction;
+    Vec3 next = point + step_m_ * direction_;
+    double excess_m = following.distance_m - keep_m_;
+    if (excess_m > 0 && params_.follow_pull > 0) {
+      Vec3 towards = following.closest - point;
+      towards -= towards.dot(direction_) * direction_;
+      if (towards.squaredNorm() > 0)
+        next += towards.normalized() * std::min(excess_m, params_.follow_pull * step_m_);
     }
+    add_point(next, GrowRule::input_strand, cluster_, group_);
+    if (ran_into_body(point, direction_)) return std::nullopt;
+    return true;
   }
-  double max_length_m = params.max_length_h * h;
-  auto too_long = [&] {
-    return static_cast<double>(strand.points.size() - 1) * step_m > max_length_m;
-  };
-  while (!full() && !too_long()) {
-    Vec3 point = strand.points.back();
-    if (group >= 0) {
-      GrowingContext::Following following = context.follow(group, backward, point);
-      // Lost (drifted off the strand's group), or turned back: the end of this group.
-      bool turned_back = direction.squaredNorm() > 0 && following.direction.dot(direction) < 0;
-      if (!following.past_end && following.distance_m <= lost_m && !turned_back) {
-        direction = following.direction;
-        Vec3 next = point + step_m * direction;
-        double excess_m = following.distance_m - keep_m;
-        if (excess_m > 0 && params.follow_pull > 0) {
-          Vec3 towards = following.closest - point;
-          towards -= towards.dot(direction) * direction;
-          if (towards.squaredNorm() > 0)
-            next += towards.normalized() * std::min(excess_m, params.follow_pull * step_m);
-        }
-        add_point(next, GrowRule::input_strand, cluster, group);
-        if (ran_into_body(point, direction)) break;  // the rail dives into the body
-        continue;
-      }
-    }
-    if (direction.squaredNorm() == 0) break;
-    // At the end of the field or of an input strand: the next strand, bridged to.
+
+  /// At the end of the field or of an input strand: the next strand, bridged to; else the
+  /// cards feeding a continuation joined, or the cap's field walked to a tail or braid.
+  /// false: the strand ends here.
+  bool go_on() {
+    const Vec3 point = strand_.points.back();
     std::optional<StrandEntry> entry =
-        context.next_entry(point, direction, visited, cluster, group < 0 ? root_cluster : -1);
-    if (!entry) {
-      // No strand starts here: where the hair continues into another cluster (a tail after
-      // its band), join the cards that feed it.
-      const std::optional<int32_t> joined = params.join_continued_flow
-                                                ? context.joined_feeder(point, direction, visited)
-                                                : std::nullopt;
-      if (!joined) break;
-      const int32_t joined_cluster = context.cluster_of_group(*joined);
-      (joined_cluster == cluster ? strand.continued_same : strand.continued_other) += 1;
-      group = *joined;
-      cluster = joined_cluster;
-      backward = false;
-      visited.push_back(group);
-      ++strand.joined;
-      continue;
+        context_.next_entry(point, direction_, visited_, cluster_, group_ < 0 ? root_cluster_ : -1);
+    if (entry) {
+      enter(*entry);
+      return true;
     }
-    int32_t next_cluster = context.cluster_of_strand(entry->strand);
-    (next_cluster == cluster ? strand.continued_same : strand.continued_other) += 1;
-    group = context.group_of_strand(entry->strand);
-    cluster = next_cluster;
-    backward = entry->backward;
-    visited.push_back(group);
-    const StrandSet& strands = context.input().input_strands;
-    Vec3 start = point_of(strands.points, backward ? strands.offsets[entry->strand + 1] - 1
-                                                   : strands.offsets[entry->strand]);
-    // Straight to its start; a step that gets no nearer (the start lies in the body, and
-    // each step is pushed back out) ends the bridge where it is.
-    for (double gap_m = (start - strand.points.back()).norm(); gap_m > step_m && !full();) {
-      Vec3 towards = (start - strand.points.back()).normalized();
-      add_point(strand.points.back() + step_m * towards, GrowRule::bridge, cluster, group);
-      double next_gap_m = (start - strand.points.back()).norm();
-      if (next_gap_m > gap_m - 0.25 * step_m) break;
+    // No strand starts here: where the hair continues into another cluster (a tail after
+    // its band), join the cards that feed it.
+    const std::optional<int32_t> joined = params_.join_continued_flow
+                                              ? context_.joined_feeder(point, direction_, visited_)
+                                              : std::nullopt;
+    if (!joined) return gather_along_field(point);
+    const int32_t joined_cluster = context_.cluster_of_group(*joined);
+    (joined_cluster == cluster_ ? strand_.continued_same : strand_.continued_other) += 1;
+    group_ = *joined;
+    cluster_ = joined_cluster;
+    backward_ = false;
+    visited_.push_back(group_);
+    ++strand_.joined;
+    return true;
+  }
+
+  /// Into the input strand of `entry`: straight to its start; a step that gets no nearer
+  /// (the start lies in the body, and each step is pushed back out) ends the bridge there.
+  void enter(const StrandEntry& entry) {
+    int32_t next_cluster = context_.cluster_of_strand(entry.strand);
+    (next_cluster == cluster_ ? strand_.continued_same : strand_.continued_other) += 1;
+    group_ = context_.group_of_strand(entry.strand);
+    cluster_ = next_cluster;
+    backward_ = entry.backward;
+    visited_.push_back(group_);
+    const StrandSet& strands = context_.input().input_strands;
+    Vec3 start = point_of(strands.points, backward_ ? strands.offsets[entry.strand + 1] - 1
+                                                    : strands.offsets[entry.strand]);
+    for (double gap_m = (start - strand_.points.back()).norm(); gap_m > step_m_ && !full();) {
+      Vec3 towards = (start - strand_.points.back()).normalized();
+      add_point(strand_.points.back() + step_m_ * towards, GrowRule::bridge, cluster_, group_);
+      double next_gap_m = (start - strand_.points.back()).norm();
+      if (next_gap_m > gap_m - 0.25 * step_m_) break;
       gap_m = next_gap_m;
     }
   }
-  return strand;
-}
+
+  /// A cap strand whose card ended on a cap that gathers into a band: on from `point` along
+  /// the root cluster's field (never turning back) until the start of a tail or braid
+  /// after the band (a cluster not starting at the root, hanging off the scalp) lies within
+  /// reach, and into it; false (the points walked taken back) when none does within
+  /// gather_along_field_h.
+  bool gather_along_field(Vec3 point) {
+    if (!field_ || params_.gather_along_field_h <= 0 || cluster_ != root_cluster_ ||
+        !context_.cluster_feeds_continuation(root_cluster_))
+      return false;
+    const size_t kept = strand_.points.size();
+    const int walk_steps = static_cast<int>(params_.gather_along_field_h / params_.step_h);
+    Vec3 heading = direction_;
+    for (int i = 0; i < walk_steps && !full(); ++i) {
+      std::optional<Vec3> d = field_->direction(point);
+      if (!d || d->dot(heading) <= 0) break;
+      Vec3 next = point + step_m_ * *d;
+      if (!field_->contains(next)) break;
+      add_point(next, GrowRule::field, root_cluster_, -1);
+      if (ran_into_body(point, *d)) break;
+      heading = *d;
+      point = strand_.points.back();
+      if (std::optional<StrandEntry> entry =
+              context_.next_entry(point, heading, visited_, cluster_, -1, true)) {
+        direction_ = heading;
+        enter(*entry);
+        return true;
+      }
+    }
+    take_back_to(kept);
+    return false;
+  }
+
+  const GrowingContext& context_;
+  const GrowParams& params_;
+  const OrientationField* field_;
+  const BodySdf& body_;
+  const int32_t root_cluster_;
+  const double step_m_, clearance_m_, lost_m_, keep_m_;
+  GrowingStrand strand_;
+  Vec3 direction_ = Vec3::Zero();  ///< of the last step
+  std::vector<int32_t> visited_;   ///< groups followed or entered
+  int32_t group_ = -1;             ///< the group followed (-1: none)
+  int32_t cluster_;                ///< the cluster the strand is in
+  bool backward_ = false;          ///< the group is followed tip to root
+};
 
 /// Unit normal of body triangle `t` (right-hand rule of its vertex order).
 Vec3 triangle_normal(const GrowInput& input, Eigen::Index t) {
@@ -786,8 +887,8 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   for (int64_t r = 0; r < root_count; ++r) {
     auto i = static_cast<size_t>(r);
     const auto& field = fields[static_cast<size_t>(root_cluster[i])];
-    grown[i] = grow_one(context, field ? &*field : nullptr, body, point_of(roots.positions, r),
-                        root_cluster[i], reference_row[i]);
+    grown[i] = StrandGrower(context, field ? &*field : nullptr, body, root_cluster[i])
+                   .grow(point_of(roots.positions, r), reference_row[i]);
   }
 
   // Assemble; a strand that could not leave its root gets a second point one step out

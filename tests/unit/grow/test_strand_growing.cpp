@@ -561,6 +561,89 @@ TEST(StrandGrowing, ASpikeStandingOnTheHeadGrowsFromItsBaseNotADiscAroundIt) {
   EXPECT_LT(standing_points_m, 0.6 * disc_points_m);
 }
 
+/// A rail of card 0's frame (+x) `lateral` off its middle plane, `offset` outside the
+/// sphere, from polar angle `first_deg` to `last_deg`, root first.
+Points3f card_zero_rail(double lateral, double offset, double first_deg, double last_deg) {
+  const CardFrame frame = card_frame(0);
+  const double rho = std::sqrt(std::pow(kRadius + offset, 2) - lateral * lateral);
+  Points3f rail(kRailPoints, 3);
+  for (int i = 0; i < kRailPoints; ++i) {
+    const double polar = radians(first_deg + (last_deg - first_deg) * i / (kRailPoints - 1));
+    const Vec3 p = kCentre + rho * (std::sin(polar) * frame.out + std::cos(polar) * kUp) +
+                   lateral * frame.side;
+    rail.row(i) = p.transpose().cast<float>();
+  }
+  return rail;
+}
+
+// A cap gathered into a tail, as braid01's: a crown card (group 1, polar 5-60 degrees)
+// ends on the cap, 4 mm over the card that runs on from 35 degrees down to the band
+// (group 0, to 110 degrees); the tail (group 2, its cluster not starting at the root)
+// hangs from 4 cm below the band. With gather_along_field_h (0.5 H) the strands rooted under the
+// crown card go on along their cluster's field past its end and into the tail (107 of
+// 107); without, most end with the crown card, 4.4 cm from the start of anything to
+// continue into (10 of 107 reach the tail, their field phase measured on the lower card).
+TEST(StrandGrowing, CapStrandsWhoseCardEndsOnTheCapGoOnAlongTheFieldIntoTheTail) {
+  GrowInput input;
+  icosphere(4, input.body_vertices, input.body_triangles);
+  input.scalp_triangle =
+      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
+  input.head_height_m = kHeadHeight;
+  input.source = "gathered cap";
+  std::vector<Points3f> polylines;
+  std::vector<int32_t> strand_group;
+  std::vector<Vec3> band_ends;
+  for (int k = 0; k < kRailsPerCard; ++k) {
+    const double lateral = kRailSpacing * k - kOuterRail;
+    polylines.push_back(card_zero_rail(lateral, kCardOffset, 35, kCardLastDeg));
+    strand_group.push_back(0);
+    band_ends.push_back(point_of(polylines.back(), kRailPoints - 1));
+    polylines.push_back(card_zero_rail(lateral, kCardOffset + 0.004, 5, 60));
+    strand_group.push_back(1);
+  }
+  std::vector<Vec3> tail_ends;
+  for (const Vec3& end : band_ends) {
+    polylines.push_back(straight_rail(end - 0.04 * kUp, -kUp, kMiddleLength));
+    strand_group.push_back(2);
+    tail_ends.push_back(end - (0.04 + kMiddleLength) * kUp);
+  }
+  input.input_strands = strand_set_from_polylines(polylines);
+  input.input_strands.strand_attributes["group"] = strand_group;
+  input.group_type = {GroupType::root_connected, GroupType::root_free, GroupType::middle};
+  input.group_cluster = {0, 0, 1};
+  input.cluster_starts_at_root = {1, 0};
+
+  // Crown roots: under the crown card before the other begins, polar under 30 degrees.
+  const auto crown_strands_in_tail = [&](const GrowResult& result, int64_t& crown) {
+    crown = 0;
+    int64_t in_tail = 0;
+    for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+      const Vec3 root = root_of(result.strands, s);
+      if (polar_in_card(0, root) >= radians(30) ||
+          std::abs(lateral_in_card(0, root)) > kOuterRail || root.x() <= 0)
+        continue;
+      ++crown;
+      const Vec3 tip = last_of(result.strands, s);
+      if (tip.y() < tail_ends.front().y() + 0.02) ++in_tail;
+    }
+    return in_tail;
+  };
+  GrowParams params = params_with(kStrandCount);
+  EXPECT_EQ(params.gather_along_field_h, 0);  // off by default: docs/grow.md, "Into the tail"
+  int64_t crown = 0, crown_off = 0;
+  const int64_t ended = crown_strands_in_tail(grow_strands(input, params), crown_off);
+  params.gather_along_field_h = 0.5;
+  const int64_t gathered = crown_strands_in_tail(grow_strands(input, params), crown);
+  std::printf(
+      "[ grow     ] gathered cap: %lld of %lld crown strands reach the tail (%lld of %lld "
+      "without gathering along the field)\n",
+      static_cast<long long>(gathered), static_cast<long long>(crown),
+      static_cast<long long>(ended), static_cast<long long>(crown_off));
+  ASSERT_GT(crown, 10);
+  EXPECT_GE(gathered, 0.8 * static_cast<double>(crown));
+  EXPECT_LT(ended, 0.2 * static_cast<double>(crown_off));
+}
+
 // Layers: card 0 gets an outer layer, its rails copied 14 mm above the sphere (the inner
 // ones lie 4 mm above it), a group of its own in the same cluster. With layers, the
 // strands rooted under the card split between the two heights; without, the field from
