@@ -1,20 +1,22 @@
 // hair-grow-report: how well the strands of strands.h5 reproduce the hair mesh of the
 // extract.h5 they were grown from: coverage, fidelity, points inside the body, roots
 // off the scalp, the worst patch's coverage, how the input and the grown strands follow the
-// painted flow, and the strands per cluster (docs/grow.md). Prints one Markdown table row,
+// painted flow (against the nearest face, and against the card each strand follows), and
+// the strands per cluster (docs/grow.md). Prints one Markdown table row,
 // or the header with --header; --clusters prints a table of the strands per cluster.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
-
-#include <algorithm>
 
 #include "hair/core/error.h"
 #include "hair/extract/extract_io.h"
 #include "hair/extract/painted_flow.h"
+#include "hair/grow/followed_card_flow.h"
 #include "hair/grow/grow_io.h"
 #include "hair/grow/grow_measures.h"
 #include "hair/h5/dataset.h"
+#include "hair/h5/enum_dataset.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/h5/strand_set_io.h"
 
@@ -25,8 +27,10 @@ std::vector<int32_t> triangle_groups(const std::vector<int64_t>& face_offsets,
                                      const std::vector<int32_t>& face_group) {
   std::vector<int32_t> groups;
   for (size_t f = 0; f + 1 < face_offsets.size(); ++f)
-    groups.insert(groups.end(), static_cast<size_t>(std::max<int64_t>(0, face_offsets[f + 1] - face_offsets[f] - 2)),
-                  face_group[f]);
+    groups.insert(
+        groups.end(),
+        static_cast<size_t>(std::max<int64_t>(0, face_offsets[f + 1] - face_offsets[f] - 2)),
+        face_group[f]);
   return groups;
 }
 
@@ -64,8 +68,9 @@ int main(int argc, char** argv) {
     std::printf(
         "| model | strands | points | coverage mean / p95 (H) | fidelity mean / p95 (H) | "
         "points inside body | root to scalp mean / max (H) | worst patch: coverage mean (H) | "
-        "input along paint | grown along flow | clusters: strands min / median / max |\n"
-        "|---|---:|---:|---|---|---:|---|---|---:|---:|---|\n");
+        "input along paint | grown along flow | grown along the followed card | clusters: "
+        "strands min / median / max |\n"
+        "|---|---:|---:|---|---|---:|---|---|---:|---:|---:|---|\n");
     return 0;
   }
   try {
@@ -111,33 +116,52 @@ int main(int argc, char** argv) {
     const hair::StrandSet input = hair::h5::read_strand_set(extract, "/strands");
     const double near_m = 0.1 * grown.head_height_m;
     int64_t input_judged = 0, grown_judged = 0;
-    const double input_along = hair::painted_flow_agreement(
-        paint.mesh, paint.flow, input, hair::kClearFlowCoherence, hair::kFlowAgreementAngleDeg,
-        near_m, input_judged);
+    const double input_along =
+        hair::painted_flow_agreement(paint.mesh, paint.flow, input, hair::kClearFlowCoherence,
+                                     hair::kFlowAgreementAngleDeg, near_m, input_judged);
+    const hair::PaintedFlow judged_flow =
+        hair::flow_with_rails(paint.mesh, paint.flow, input, near_m);
     const double grown_along = hair::painted_flow_agreement(
-        paint.mesh, hair::flow_with_rails(paint.mesh, paint.flow, input, near_m), grown.strands,
-        hair::kClearFlowCoherence, hair::kFlowAgreementAngleDeg, near_m, grown_judged);
+        paint.mesh, judged_flow, grown.strands, hair::kClearFlowCoherence,
+        hair::kFlowAgreementAngleDeg, near_m, grown_judged);
+    // The same against the card each strand follows, where cards cross.
+    const hair::h5::File strands_file = hair::h5::File::open_read_only(strands_path);
+    const auto point_group = grown.strands.point_attributes.find("group");
+    if (point_group == grown.strands.point_attributes.end() ||
+        !std::holds_alternative<std::vector<int32_t>>(point_group->second))
+      throw hair::Error::bad_dataset(strands_path, "/strands/point_attributes/group",
+                                     "missing or not integers");
+    int64_t followed_judged = 0;
+    const double followed_along = hair::followed_card_flow_agreement(
+        paint.mesh, hair::h5::read_vector<int32_t>(extract, "/mesh/face_group"), judged_flow,
+        grown.strands, std::get<std::vector<int32_t>>(point_group->second),
+        hair::h5::read_enum_values(strands_file, "/strands/point_rule"), hair::kClearFlowCoherence,
+        hair::kFlowAgreementAngleDeg, near_m, followed_judged);
 
     std::vector<int64_t> sorted_counts = strand_count_by_cluster;
     std::sort(sorted_counts.begin(), sorted_counts.end());
     std::string cluster_text = "-";
     if (!sorted_counts.empty())
-      cluster_text = std::to_string(sorted_counts.size()) + ": " + std::to_string(sorted_counts.front()) +
-                     " / " + std::to_string(sorted_counts[sorted_counts.size() / 2]) + " / " +
+      cluster_text = std::to_string(sorted_counts.size()) + ": " +
+                     std::to_string(sorted_counts.front()) + " / " +
+                     std::to_string(sorted_counts[sorted_counts.size() / 2]) + " / " +
                      std::to_string(sorted_counts.back());
     std::string worst_text = "-";
     if (m.worst_group >= 0) {
       char text[96];
-      std::snprintf(text, sizeof text, "group %d: %.4f", m.worst_group, m.worst_group_coverage_mean_h);
+      std::snprintf(text, sizeof text, "group %d: %.4f", m.worst_group,
+                    m.worst_group_coverage_mean_h);
       worst_text = text;
     }
-    std::printf("| %s | %lld | %lld | %.4f / %.4f | %.4f / %.4f | %.2f%% | %.4f / %.4f | %s | %s | %s | %s |\n",
-                label.c_str(), static_cast<long long>(grown.strands.strand_count()),
-                static_cast<long long>(grown.strands.point_count()), m.coverage_mean_h,
-                m.coverage_p95_h, m.fidelity_mean_h, m.fidelity_p95_h, 100 * m.inside_body_share,
-                m.root_distance_mean_h, m.root_distance_max_h, worst_text.c_str(),
-                share_text(input_along, input_judged).c_str(),
-                share_text(grown_along, grown_judged).c_str(), cluster_text.c_str());
+    std::printf(
+        "| %s | %lld | %lld | %.4f / %.4f | %.4f / %.4f | %.2f%% | %.4f / %.4f | %s | %s | %s | %s "
+        "| %s |\n",
+        label.c_str(), static_cast<long long>(grown.strands.strand_count()),
+        static_cast<long long>(grown.strands.point_count()), m.coverage_mean_h, m.coverage_p95_h,
+        m.fidelity_mean_h, m.fidelity_p95_h, 100 * m.inside_body_share, m.root_distance_mean_h,
+        m.root_distance_max_h, worst_text.c_str(), share_text(input_along, input_judged).c_str(),
+        share_text(grown_along, grown_judged).c_str(),
+        share_text(followed_along, followed_judged).c_str(), cluster_text.c_str());
   } catch (const hair::Error& e) {
     std::cerr << "hair-grow-report: error: " << e.what() << "\n";
     return e.exit_code();
