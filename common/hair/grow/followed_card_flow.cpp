@@ -1,6 +1,7 @@
 #include "hair/grow/followed_card_flow.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -22,26 +23,24 @@ struct FaceTriangles {
   std::unique_ptr<TriangleMeshDistance> distance;
 };
 
-/// The fan triangles of the faces of `mesh` in `group` (all faces when it is negative).
-FaceTriangles face_triangles(const PolyMesh& mesh, const std::vector<int32_t>& face_group,
-                             int32_t group) {
+/// Of the mesh's fan triangles `triangles` (faces `triangle_face`), those of the faces in
+/// `group` (every one when it is negative).
+FaceTriangles face_triangles(const PolyMesh& mesh, const Triangles3i& triangles,
+                             const std::vector<int64_t>& triangle_face,
+                             const std::vector<int32_t>& face_group, int32_t group) {
   FaceTriangles out;
-  std::vector<Eigen::Vector3i> rows;
-  for (int64_t f = 0; f < mesh.face_count(); ++f) {
-    if (group >= 0 && face_group[static_cast<size_t>(f)] != group) continue;
-    const int64_t first = mesh.face_offsets[static_cast<size_t>(f)];
-    for (int64_t k = 1; k + 1 < mesh.face_size(f); ++k) {
-      rows.emplace_back(mesh.face_vertices[static_cast<size_t>(first)],
-                        mesh.face_vertices[static_cast<size_t>(first + k)],
-                        mesh.face_vertices[static_cast<size_t>(first + k + 1)]);
-      out.face.push_back(f);
-    }
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
+    const int64_t face = triangle_face[static_cast<size_t>(t)];
+    if (group >= 0 && face_group[static_cast<size_t>(face)] != group) continue;
+    rows.push_back(t);
+    out.face.push_back(face);
   }
   if (rows.empty()) return out;
-  Triangles3i triangles(static_cast<Eigen::Index>(rows.size()), 3);
+  Triangles3i kept(static_cast<Eigen::Index>(rows.size()), 3);
   for (size_t i = 0; i < rows.size(); ++i)
-    triangles.row(static_cast<Eigen::Index>(i)) = rows[i].transpose();
-  out.distance = std::make_unique<TriangleMeshDistance>(mesh.vertices, triangles);
+    kept.row(static_cast<Eigen::Index>(i)) = triangles.row(rows[i]);
+  out.distance = std::make_unique<TriangleMeshDistance>(mesh.vertices, kept);
   return out;
 }
 
@@ -61,14 +60,20 @@ double followed_card_flow_agreement(const PolyMesh& mesh, const std::vector<int3
     throw Error::bad_input("followed card flow",
                            "per-point groups or rules do not match the strands");
   counted = 0;
-  const FaceTriangles all = face_triangles(mesh, face_group, -1);
+  const Triangles3i triangles = fan_triangulation(mesh.face_offsets, mesh.face_vertices);
+  std::vector<int64_t> triangle_face;  // fan_triangulation's order: face by face
+  for (int64_t face = 0; face < mesh.face_count(); ++face)
+    triangle_face.insert(triangle_face.end(),
+                         static_cast<size_t>(std::max(0, mesh.face_size(face) - 2)), face);
+  const FaceTriangles all = face_triangles(mesh, triangles, triangle_face, face_group, -1);
   if (!all.distance) return 0;
   // Per followed group, its own faces (a group without faces: judged against them all).
   std::map<int32_t, FaceTriangles> own;
   for (size_t row = 0; row < points; ++row)
     if (point_rule[row] == kAlongInputStrand && point_group[row] >= 0 &&
         !own.count(point_group[row]))
-      own.emplace(point_group[row], face_triangles(mesh, face_group, point_group[row]));
+      own.emplace(point_group[row],
+                  face_triangles(mesh, triangles, triangle_face, face_group, point_group[row]));
   const double min_cosine = std::cos(max_angle_deg * std::numbers::pi / 180);
   int64_t agreeing = 0, judged = 0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : agreeing, judged)
