@@ -80,6 +80,18 @@ std::vector<uint8_t> flags_where(const GrowInput& input, Predicate flagged) {
   return flags;
 }
 
+/// The head: the sphere (5120 triangles, edges about 7 mm), its scalp the cap above
+/// kScalpAboveCentre, H kHeadHeight; no input strands yet.
+GrowInput head_sphere_input(const std::string& source) {
+  GrowInput input;
+  icosphere(4, input.body_vertices, input.body_triangles);
+  input.scalp_triangle =
+      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
+  input.head_height_m = kHeadHeight;
+  input.source = source;
+  return input;
+}
+
 /// A straight input strand from `start` along the unit `direction` for `length` metres.
 Points3f straight_rail(const Vec3& start, const Vec3& direction, double length) {
   int count = static_cast<int>(std::round(length / kInputStep)) + 1;
@@ -134,12 +146,8 @@ struct Scene {
 
 Scene make_scene(bool with_root_types = true, double middle_inset = 0, double gap = kGap) {
   Scene scene;
+  scene.input = head_sphere_input("sphere");
   GrowInput& input = scene.input;
-  icosphere(4, input.body_vertices, input.body_triangles);  // 5120 triangles, edges ~7 mm
-  input.scalp_triangle =
-      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
-  input.head_height_m = kHeadHeight;
-  input.source = "sphere";
 
   std::vector<Points3f> polylines;
   std::vector<int32_t> strand_group;
@@ -512,12 +520,7 @@ double height_above_sphere(const Vec3& p) { return (p - kCentre).norm() - kRadiu
 // rule (whole triangles within scalp_cover_h, 12 mm, of any rail point) spread them over a
 // disc round the base and they grew up beside the card.
 TEST(StrandGrowing, ASpikeStandingOnTheHeadGrowsFromItsBaseNotADiscAroundIt) {
-  GrowInput input;
-  icosphere(4, input.body_vertices, input.body_triangles);
-  input.scalp_triangle =
-      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
-  input.head_height_m = kHeadHeight;
-  input.source = "sphere";
+  GrowInput input = head_sphere_input("sphere");
   std::vector<Points3f> rails;
   for (int k = 0; k < 5; ++k) {
     const Vec3 base = kCentre + (kRadius + 0.002) * kUp + (0.004 * k - 0.008) * Vec3::UnitX();
@@ -584,12 +587,7 @@ Points3f card_zero_rail(double lateral, double offset, double first_deg, double 
 // 107); without, most end with the crown card, 4.4 cm from the start of anything to
 // continue into (10 of 107 reach the tail, their field phase measured on the lower card).
 TEST(StrandGrowing, CapStrandsWhoseCardEndsOnTheCapGoOnAlongTheFieldIntoTheTail) {
-  GrowInput input;
-  icosphere(4, input.body_vertices, input.body_triangles);
-  input.scalp_triangle =
-      flags_where(input, [](const Vec3& c) { return c.y() > kCentre.y() + kScalpAboveCentre; });
-  input.head_height_m = kHeadHeight;
-  input.source = "gathered cap";
+  GrowInput input = head_sphere_input("gathered cap");
   std::vector<Points3f> polylines;
   std::vector<int32_t> strand_group;
   std::vector<Vec3> band_ends;
