@@ -298,6 +298,25 @@ class StrandEndIndex {
     return 0;
   }
 
+  /// What a strand end at `point` with outward direction `outward` is, judged only by
+  /// hair that runs on through it: the nearest end of another patch's strand within
+  /// `radius` that is either a root leaving along `outward` (the hair goes on: a tip
+  /// here, -1) or a tip arriving against it (the hair comes in: a root here, +1), both
+  /// within 60 degrees; 0 if none. Ends beside it (roots side by side in dense hair, cap
+  /// strands converging at a band) do not count.
+  int through_vote(const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch,
+                   float radius) const {
+    constexpr float aligned = 0.5f;  // cos 60 degrees
+    if (!index_) return 0;
+    for (int32_t id : index_->within(point, radius)) {  // nearest first
+      const StrandEnd& other = ends_[static_cast<size_t>(id)];
+      if (other.patch == patch) continue;
+      if (other.is_root && outward.dot(other.flow) > aligned) return -1;
+      if (!other.is_root && -outward.dot(other.flow) > aligned) return 1;
+    }
+    return 0;
+  }
+
  private:
   std::vector<StrandEnd> ends_;
   std::optional<PointIndex> index_;
@@ -339,6 +358,60 @@ int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRail
       ++count;
     }
   return count;
+}
+
+/// Where a region off the head (every rail end at least `height_min_head_distance_m`
+/// from it) had its direction decided by its vertex ids with the head distance silent
+/// (a braid's piece, a card in the middle of a hanging lock), and the hair
+/// that runs on through its rails' ends says the other way, the hair wins: at least half
+/// of its rails have such an end (StrandEndIndex::through_vote(), which ignores ends
+/// lying beside the rail's) and three quarters of their votes say it runs backwards.
+/// Ids are an accident of modelling (a card extruded from its tip, or turned round);
+/// pieces that meet end to end are the hair itself. Applied in rounds, each on the
+/// decisions of the last, so a turned piece can settle its neighbour; a piece between
+/// two turned the wrong way, whose ends disagree, is left as it is. Returns how many
+/// regions it turned. On the head it would misread: cap strands converging head-on at a
+/// band or a whorl meet end to end just as pieces of one lock do.
+int continuation_overrules_ids(const Points3f& vertices, std::vector<RegionRails>& regions,
+                               const OrientationThresholds& thresholds, float radius,
+                               int max_rounds = 8) {
+  int turned = 0;
+  for (int round = 0; round < max_rounds; ++round) {
+    const StrandEndIndex ends(vertices, regions);
+    std::vector<size_t> to_turn;
+    for (size_t r = 0; r < regions.size(); ++r) {
+      const RegionRails& region = regions[r];
+      if (!region.decision || region.decision->rule != OrientationRule::vertex_order ||
+          region.open_rails.empty() ||
+          std::abs(region.evidence.scalp_distance_slope) >= thresholds.scalp_distance_min_slope ||
+          region.evidence.head_distance_min_m < thresholds.height_min_head_distance_m)
+        continue;
+      double forward = 0, backward = 0;
+      for (std::vector<int32_t> rail : region.open_rails) {
+        if (region.decision->reverse) std::reverse(rail.begin(), rail.end());
+        int first_is_root = ends.through_vote(vertices.row(rail.front()).transpose(),
+                                              -end_direction(vertices, rail, false), region.patch,
+                                              radius);
+        int last_is_root = ends.through_vote(vertices.row(rail.back()).transpose(),
+                                             end_direction(vertices, rail, true), region.patch,
+                                             radius);
+        int score = first_is_root - last_is_root;  // > 0: the rail runs as decided
+        forward += score > 0 ? 1 : 0;
+        backward += score == -2 ? 1 : 0;  // both ends say it runs backwards
+      }
+      double votes = forward + backward;
+      if (backward >= 0.5 * static_cast<double>(region.open_rails.size()) &&
+          backward - forward >= 0.5 * votes)
+        to_turn.push_back(r);
+    }
+    if (to_turn.empty()) break;
+    for (size_t r : to_turn) {  // applied together: order does not matter
+      OrientationDecision& decision = *regions[r].decision;
+      decision = OrientationDecision{!decision.reverse, OrientationRule::continuation, 0.75f};
+    }
+    turned += static_cast<int>(to_turn.size());
+  }
+  return turned;
 }
 
 /// Continuation in rounds, so that a decision travels along chains of patches (a cap
@@ -505,6 +578,9 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
                                               OrientationRule::vertex_order);
   decide_by_continuation(vertices, regions,
                          static_cast<float>(params.continuation_radius_h * head_height_m));
+  stats.continuation_overruled_ids = continuation_overrules_ids(
+      vertices, regions, thresholds,
+      static_cast<float>(params.continuation_radius_h * head_height_m));
   stats.paint_overruled_continuation = paint_overrules(
       regions, thresholds, params.convention_min_agreement, OrientationRule::continuation);
   for (RegionRails& region : regions)

@@ -106,6 +106,9 @@ struct ExtractStats {
   /// test), turned after continuation: continuation still runs from the regions as they
   /// were, since on layered cards it carries a reading on too far (bob01).
   int64_t paint_overruled_continuation = 0;
+  /// Regions whose vertex ids decided with the head distance silent, turned because the
+  /// hair running on through their rails' ends said the other way.
+  int64_t continuation_overruled_ids = 0;
 };
 
 /// Everything extract.h5 holds (schemas/extract.json), in metres.

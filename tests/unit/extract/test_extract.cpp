@@ -168,6 +168,78 @@ TEST(ExtractStrands, CapRunsIntoTheTailThatContinuesIt) {
   }
 }
 
+/// A lock wound level round the back of the head, 4 cm off it, in `pieces` cards meeting
+/// end to end, the lock running from azimuth 0.3 on; `reversed` marks the pieces whose
+/// vertex ids run from tip to root. A braid's pieces cross nearly level like this: neither
+/// the head distance nor the height says which way a piece runs, so the ids decide.
+PolyMesh level_lock(int pieces, const std::vector<bool>& reversed) {
+  PolyMesh mesh;
+  constexpr double radius_m = 0.14, piece_rad = 0.5, gap_rad = 0.01;
+  for (int k = 0; k < pieces; ++k) {
+    std::vector<Eigen::Vector3d> centre;
+    for (int i = 0; i <= 6; ++i) {
+      double azimuth = 0.3 + piece_rad * k + (piece_rad - gap_rad) * i / 6.0;
+      centre.push_back({radius_m * std::cos(azimuth), 1.6, -radius_m * std::sin(azimuth)});
+    }
+    testing::append_mesh(
+        mesh,
+        hair_strip(centre, Eigen::Vector3d::UnitY(), 0.02,
+                   {.rails = 3, .segments = 6, .reverse_order = reversed[k], .with_uv = false}));
+  }
+  return mesh;
+}
+
+/// Whether every strand of group `g` runs the lock's way (its azimuth grows).
+bool group_runs_along_the_lock(const ExtractResult& result, int32_t g) {
+  for (int32_t s = result.group_first_strand[g]; s < result.group_first_strand[g + 1]; ++s) {
+    auto strand = result.strands.strand(s);
+    auto azimuth = [&](Eigen::Index i) { return std::atan2(-strand(i, 2), strand(i, 0)); };
+    if (!(azimuth(strand.rows() - 1) > azimuth(0))) return false;
+  }
+  return true;
+}
+
+TEST(ExtractStrands, APieceNumberedBackwardsInALockOffTheHeadFollowsTheLock) {
+  // The middle piece of five is numbered tip to root; the pieces on either side run on
+  // through both its ends, so it is turned (rule continuation).
+  ExtractResult result = extract_strands(level_lock(5, {false, false, true, false, false}),
+                                         snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(result.group_count(), 5);
+  EXPECT_EQ(result.stats.continuation_overruled_ids, 1);
+  EXPECT_EQ(result.group_rule[2], OrientationRule::continuation);
+  for (int32_t g = 0; g < 5; ++g) EXPECT_TRUE(group_runs_along_the_lock(result, g)) << g;
+
+  // Two backward pieces side by side: each has one neighbour running on through one end
+  // and one running against it through the other, so neither is turned (the ids stay).
+  ExtractResult pair = extract_strands(level_lock(5, {false, true, true, false, false}),
+                                       snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(pair.group_count(), 5);
+  EXPECT_EQ(pair.stats.continuation_overruled_ids, 0);
+  EXPECT_EQ(pair.group_rule[1], OrientationRule::vertex_order);
+  EXPECT_EQ(pair.group_rule[2], OrientationRule::vertex_order);
+}
+
+TEST(ExtractStrands, APieceOnTheHeadKeepsItsIdsWhereStrandsMeetHeadOn) {
+  // The same lock laid on the head (5 mm off it, inside height_min_head_distance_h):
+  // cap strands converging head-on at a band or a whorl meet end to end just as one
+  // lock's pieces do, so on the head the ids are not overruled.
+  PolyMesh mesh;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<Eigen::Vector3d> centre;
+    for (int i = 0; i <= 6; ++i) {
+      double azimuth = 0.3 + 0.5 * k + 0.49 * i / 6.0;
+      centre.push_back({0.105 * std::cos(azimuth), 1.6, -0.105 * std::sin(azimuth)});
+    }
+    testing::append_mesh(
+        mesh, hair_strip(centre, Eigen::Vector3d::UnitY(), 0.02,
+                         {.rails = 3, .segments = 6, .reverse_order = k == 1, .with_uv = false}));
+  }
+  ExtractResult result = extract_strands(mesh, snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(result.group_count(), 3);
+  EXPECT_EQ(result.stats.continuation_overruled_ids, 0);
+  EXPECT_EQ(result.group_rule[1], OrientationRule::vertex_order);
+}
+
 TEST(ExtractStrands, MeasuresTheHeadAndMarksTheScalp) {
   ExtractResult result = extract_strands(hanging_hair().mesh, snowman_body(), {}, "hair", "body");
   EXPECT_NEAR(result.head.head_top_y, 1.7, 0.01);
