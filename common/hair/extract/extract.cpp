@@ -566,6 +566,37 @@ int paint_overrules(std::vector<RegionRails>& regions, const OrientationThreshol
   return turned;
 }
 
+/// Where a region's vertex ids decided its direction with the head distance silent, and
+/// both its height (the higher end is the root, by at least `height_min_slope`) and its
+/// texture's v (by at least `uv_min_growth`, read with the mesh's convention, learnt
+/// from its confidently decided regions) say the other way, the two win: hair lying
+/// down the side of the head, or a piece hanging straight down behind it, numbered tip
+/// to root, keeps its distance to the head but falls from its root and is textured from
+/// it. Hair brushed up from its root, whose texture runs up with it, is left to its ids
+/// (height and v disagree there). Returns how many regions it turned.
+int height_and_texture_overrule_ids(std::vector<RegionRails>& regions,
+                                    const OrientationThresholds& thresholds,
+                                    const MeshConventions& conventions) {
+  if (!conventions.uv_growth_sign) return 0;
+  int turned = 0;
+  for (RegionRails& region : regions) {
+    const OrientationEvidence& e = region.evidence;
+    if (!region.decision || region.decision->rule != OrientationRule::vertex_order ||
+        std::abs(e.scalp_distance_slope) >= thresholds.scalp_distance_min_slope || !e.uv_growth ||
+        std::abs(*e.uv_growth) < thresholds.uv_min_growth ||
+        std::abs(e.height_slope) < thresholds.height_min_slope)
+      continue;
+    const bool height_reverse = e.height_slope < 0;
+    const bool uv_reverse = (*e.uv_growth > 0 ? 1 : -1) != *conventions.uv_growth_sign;
+    if (height_reverse != uv_reverse || height_reverse == region.decision->reverse) continue;
+    region.decision =
+        OrientationDecision{height_reverse, OrientationRule::height,
+                            static_cast<float>(std::min(std::abs(e.height_slope), 1.0))};
+    ++turned;
+  }
+  return turned;
+}
+
 /// Decides every region's direction: confident regions first, then continuation from
 /// decided neighbours, then the mesh's conventions for the rest.
 void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regions,
@@ -576,6 +607,8 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
   stats.uv_growth_sign = conventions.uv_growth_sign.value_or(0);
   stats.paint_overruled_ids = paint_overrules(regions, thresholds, params.convention_min_agreement,
                                               OrientationRule::vertex_order);
+  stats.height_and_texture_overruled_ids =
+      height_and_texture_overrule_ids(regions, thresholds, conventions);
   decide_by_continuation(vertices, regions,
                          static_cast<float>(params.continuation_radius_h * head_height_m));
   stats.continuation_overruled_ids = continuation_overrules_ids(
@@ -1048,6 +1081,7 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   OrientationThresholds thresholds;
   thresholds.vertex_order_min_vote = params.vertex_order_min_vote;
   thresholds.scalp_distance_min_slope = params.scalp_distance_min_slope;
+  thresholds.scalp_distance_lean_slope = params.scalp_distance_lean_slope;
   thresholds.uv_min_growth = params.uv_min_growth;
   thresholds.height_min_slope = params.height_min_slope;
   thresholds.height_min_head_distance_m = params.height_min_head_distance_h * head_height_m;

@@ -50,6 +50,7 @@ struct ExtractParams {
   /// Orientation thresholds (see OrientationThresholds).
   double vertex_order_min_vote = 0.8;
   double scalp_distance_min_slope = 0.2;
+  double scalp_distance_lean_slope = 0.05;
   double uv_min_growth = 0.3;
   double height_min_slope = 0.3;
   double height_min_head_distance_h = 0.05;
@@ -109,6 +110,9 @@ struct ExtractStats {
   /// Regions whose vertex ids decided with the head distance silent, turned because the
   /// hair running on through their rails' ends said the other way.
   int64_t continuation_overruled_ids = 0;
+  /// Regions off the head whose vertex ids decided with the head distance silent, turned
+  /// because their height and their texture's v both said the other way.
+  int64_t height_and_texture_overruled_ids = 0;
 };
 
 /// Everything extract.h5 holds (schemas/extract.json), in metres.

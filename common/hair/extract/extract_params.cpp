@@ -65,6 +65,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "change of distance to the head per unit of rail length for the head distance "
              "to decide",
              ParamRange::above(0));
+  params.add("scalp_distance_lean_slope", p.scalp_distance_lean_slope,
+             "...and for it to lean: leaning one way, with a decisive height slope "
+             "(height_min_slope) the same way, it overrules vertex order",
+             ParamRange::at_least(0));
   params.add("height_min_slope", p.height_min_slope,
              "height change per unit of rail length that settles vertex order against head "
              "distance when they disagree (the higher end is the root)...",

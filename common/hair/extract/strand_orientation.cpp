@@ -47,6 +47,16 @@ std::optional<OrientationDecision> decide_orientation(
 
   if (ids_agree && trust_ids) {
     bool ids_reverse = evidence.vertex_order_vote < 0;
+    // Ids against the head distance's leaning and the height both: hair lying along
+    // the head from its root (medium hair down the side), numbered tip to root, nears
+    // the head by too little to decide alone, but its root is also the higher end.
+    bool height_decides = std::abs(evidence.height_slope) >= thresholds.height_min_slope;
+    bool height_reverse = evidence.height_slope < 0;
+    if (!distance_decides && height_decides && height_reverse != ids_reverse &&
+        std::abs(evidence.scalp_distance_slope) >= thresholds.scalp_distance_lean_slope &&
+        distance_reverse == height_reverse)
+      return OrientationDecision{height_reverse, OrientationRule::height,
+                                 clamp01(std::abs(evidence.height_slope))};
     if (!distance_decides || distance_reverse == ids_reverse) {
       float agreement = clamp01((1 + std::abs(evidence.vertex_order_vote)) / 2);
       return OrientationDecision{ids_reverse, OrientationRule::vertex_order,
@@ -54,7 +64,6 @@ std::optional<OrientationDecision> decide_orientation(
     }
     if (std::abs(evidence.height_slope) >= thresholds.height_min_slope &&
         evidence.head_distance_min_m >= thresholds.height_min_head_distance_m) {
-      bool height_reverse = evidence.height_slope < 0;
       return OrientationDecision{height_reverse,
                                  height_reverse == ids_reverse ? OrientationRule::vertex_order
                                                                : OrientationRule::scalp_distance,

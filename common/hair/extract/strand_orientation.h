@@ -50,6 +50,9 @@ struct OrientationEvidence {
 struct OrientationThresholds {
   double vertex_order_min_vote = 0.8;     ///< |vote| for the ordered rails to agree (90%)
   double scalp_distance_min_slope = 0.2;  ///< |slope| for the head distance to decide
+  /// |slope| for the head distance to lean: with a decisive height slope the same way,
+  /// it overrules vertex ids (see decide_orientation(), step 1)
+  double scalp_distance_lean_slope = 0.05;
   double uv_min_growth = 0.3;             ///< |uv growth| for the texture to decide
   double height_min_slope = 0.3;          ///< |height slope| to settle ids against head distance...
   double height_min_head_distance_m = 0;  ///< ...for hair at least this far off the head

@@ -240,6 +240,54 @@ TEST(ExtractStrands, APieceOnTheHeadKeepsItsIdsWhereStrandsMeetHeadOn) {
   EXPECT_EQ(result.group_rule[1], OrientationRule::vertex_order);
 }
 
+/// Eight strips hanging from the head, numbered and textured root to tip (the head
+/// distance decides them and teaches extract the mesh's texture convention: 8 of the 9
+/// regions' v grows from the end decided as the root, over the 85% asked), and one
+/// lying down the side of the head from 40 to 100 degrees off the crown, 5 mm off it,
+/// numbered tip to root: its head distance does not change, but it falls 10 cm from its
+/// root.
+PolyMesh hanging_strips_and_one_lying_backwards(bool lying_with_uv) {
+  PolyMesh mesh;
+  for (int i = 0; i < 8; ++i) {
+    double azimuth = 0.9 + 0.6 * i;
+    Eigen::Vector3d root = head_point(azimuth, 1.0);
+    Eigen::Vector3d outward = (root - Eigen::Vector3d(0, 1.6, 0)).normalized();
+    Eigen::Vector3d across = outward.cross(Eigen::Vector3d::UnitY()).normalized();
+    testing::append_mesh(mesh, hair_strip(falling_polyline(root, outward, 0.3, 10, 0.15), across,
+                                          0.03, {.segments = 10}));
+  }
+  std::vector<Eigen::Vector3d> lying;
+  for (int i = 0; i <= 12; ++i) {
+    double polar = (40.0 + 60.0 * i / 12.0) * std::numbers::pi / 180;
+    lying.push_back({0.105 * std::sin(polar), 1.6 + 0.105 * std::cos(polar), 0});
+  }
+  testing::append_mesh(
+      mesh,
+      hair_strip(lying, Eigen::Vector3d::UnitZ(), 0.02,
+                 {.rails = 3, .segments = 12, .reverse_order = true, .with_uv = lying_with_uv}));
+  return mesh;
+}
+
+TEST(ExtractStrands, HairLyingDownTheHeadNumberedBackwardsFollowsItsHeightAndTexture) {
+  ExtractResult result = extract_strands(hanging_strips_and_one_lying_backwards(true),
+                                         snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(result.group_count(), 9);
+  EXPECT_EQ(result.stats.uv_growth_sign, 1);
+  EXPECT_EQ(result.stats.height_and_texture_overruled_ids, 1);
+  EXPECT_EQ(result.group_rule[8], OrientationRule::height);
+  for (int32_t s = result.group_first_strand[8]; s < result.group_first_strand[9]; ++s) {
+    auto strand = result.strands.strand(s);
+    EXPECT_GT(strand(0, 1), strand(strand.rows() - 1, 1));  // from the higher end, its root
+  }
+  // Without a texture the height alone does not overrule the ids (hair brushed up rises
+  // from its root): the strip is read as numbered.
+  ExtractResult untextured = extract_strands(hanging_strips_and_one_lying_backwards(false),
+                                             snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(untextured.group_count(), 9);
+  EXPECT_EQ(untextured.stats.height_and_texture_overruled_ids, 0);
+  EXPECT_EQ(untextured.group_rule[8], OrientationRule::vertex_order);
+}
+
 TEST(ExtractStrands, MeasuresTheHeadAndMarksTheScalp) {
   ExtractResult result = extract_strands(hanging_hair().mesh, snowman_body(), {}, "hair", "body");
   EXPECT_NEAR(result.head.head_top_y, 1.7, 0.01);
@@ -314,6 +362,41 @@ TEST(ExtractStrands, PatchWithoutQuadsGivesOneStrandAlongItsAxis) {
 
 namespace hair {
 namespace {
+
+TEST(DecideOrientation, IdsGiveWayWhereTheHeadDistanceLeansAndTheHeightDecidesAgainstThem) {
+  // Medium hair lying down the side of the head from its root, numbered tip to root
+  // (the ids vote to reverse its rails): along the rails the head distance grows by
+  // only 1.5 cm over 15 cm (slope 0.1, under the 0.2 that decides), but the height
+  // falls by 12 cm (height slope 0.8), so both say the rails start at the root.
+  OrientationThresholds thresholds;
+  OrientationEvidence lying{.vertex_order_vote = -1,
+                            .has_ordered_rails = true,
+                            .scalp_distance_slope = 0.1,
+                            .height_slope = 0.8};
+  auto decision = decide_orientation(lying, thresholds, std::nullopt);
+  ASSERT_TRUE(decision.has_value());
+  EXPECT_EQ(decision->rule, OrientationRule::height);
+  EXPECT_FALSE(decision->reverse);  // the rails run from their root, not as the ids say
+  EXPECT_NEAR(decision->confidence, 0.8, 1e-6);
+
+  // Either cue alone leaves the ids: the distance under its lean (a cap lying flat, or
+  // a piece hanging level beside the head)...
+  OrientationEvidence flat = lying;
+  flat.scalp_distance_slope = 0.02;
+  EXPECT_EQ(decide_orientation(flat, thresholds, std::nullopt)->rule,
+            OrientationRule::vertex_order);
+  // ...the height faint...
+  OrientationEvidence level = lying;
+  level.height_slope = 0.1;
+  EXPECT_EQ(decide_orientation(level, thresholds, std::nullopt)->rule,
+            OrientationRule::vertex_order);
+  // ...or the two at odds (short hair brushed up: its root nearer the head but lower).
+  OrientationEvidence brushed_up = lying;
+  brushed_up.height_slope = -0.8;
+  decision = decide_orientation(brushed_up, thresholds, std::nullopt);
+  EXPECT_EQ(decision->rule, OrientationRule::vertex_order);
+  EXPECT_TRUE(decision->reverse);
+}
 
 TEST(DecideOrientation, AClearAlphaFadeDecidesAfterTheHeadDistanceAndContinuation) {
   OrientationThresholds thresholds;
