@@ -322,27 +322,40 @@ class StrandEndIndex {
   std::optional<PointIndex> index_;
 };
 
+/// What the two ends of `rail` (as it runs) say of it, by `vote(point, outward)` at each:
+/// whether its first point is a root, minus whether its last point is (each +1, -1 or 0).
+/// +2: both ends say it runs as it is; -2: both say it runs backwards.
+template <typename EndVote>
+int rail_end_score(const Points3f& vertices, const std::vector<int32_t>& rail,
+                   const EndVote& vote) {
+  int first_is_root =
+      vote(vertices.row(rail.front()).transpose(), -end_direction(vertices, rail, false));
+  int last_is_root =
+      vote(vertices.row(rail.back()).transpose(), end_direction(vertices, rail, true));
+  return first_is_root - last_is_root;
+}
+
 int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRails>& regions,
                                 float radius) {
   const StrandEndIndex ends(vertices, regions);
-  auto end_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch) {
-    return ends.vote(point, outward, patch, radius);
-  };
 
   std::vector<std::optional<OrientationDecision>> decided(regions.size());
   for (size_t r = 0; r < regions.size(); ++r) {
     const RegionRails& region = regions[r];
     if (region.decision || region.open_rails.empty()) continue;
+    bool spoke = false;  // whether an end of the rail being scored had a neighbour
+    auto end_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward) {
+      int vote = ends.vote(point, outward, region.patch, radius);
+      spoke = spoke || vote != 0;
+      return vote;
+    };
     double forward = 0, backward = 0, rails_with_neighbour = 0;
     for (const auto& rail : region.open_rails) {
-      int first_is_root = end_vote(vertices.row(rail.front()).transpose(),
-                                   -end_direction(vertices, rail, false), region.patch);
-      int last_is_root = end_vote(vertices.row(rail.back()).transpose(),
-                                  end_direction(vertices, rail, true), region.patch);
-      int score = first_is_root - last_is_root;  // > 0: the rail runs as it is
+      spoke = false;
+      int score = rail_end_score(vertices, rail, end_vote);  // > 0: the rail runs as it is
       forward += score > 0 ? 1 : 0;
       backward += score < 0 ? 1 : 0;
-      rails_with_neighbour += first_is_root != 0 || last_is_root != 0 ? 1 : 0;
+      rails_with_neighbour += spoke ? 1 : 0;
     }
     double votes = forward + backward;
     if (rails_with_neighbour < 0.5 * static_cast<double>(region.open_rails.size()) || votes == 0 ||
@@ -363,9 +376,9 @@ int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRail
 /// Where a region off the head (every rail end at least `height_min_head_distance_m`
 /// from it) had its direction decided by its vertex ids with the head distance silent
 /// (a braid's piece, a card in the middle of a hanging lock), and the hair
-/// that runs on through its rails' ends says the other way, the hair wins: at least half
-/// of its rails have such an end (StrandEndIndex::through_vote(), which ignores ends
-/// lying beside the rail's) and three quarters of their votes say it runs backwards.
+/// that runs on through its rails' ends says the other way, the hair wins: on at least
+/// half of its rails both ends say it runs backwards (StrandEndIndex::through_vote(),
+/// which ignores ends lying beside the rail's), three quarters of the rails that vote.
 /// Ids are an accident of modelling (a card extruded from its tip, or turned round);
 /// pieces that meet end to end are the hair itself. Applied in rounds, each on the
 /// decisions of the last, so a turned piece can settle its neighbour; a piece between
@@ -386,16 +399,13 @@ int continuation_overrules_ids(const Points3f& vertices, std::vector<RegionRails
           std::abs(region.evidence.scalp_distance_slope) >= thresholds.scalp_distance_min_slope ||
           region.evidence.head_distance_min_m < thresholds.height_min_head_distance_m)
         continue;
+      auto through_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward) {
+        return ends.through_vote(point, outward, region.patch, radius);
+      };
       double forward = 0, backward = 0;
       for (std::vector<int32_t> rail : region.open_rails) {
         if (region.decision->reverse) std::reverse(rail.begin(), rail.end());
-        int first_is_root = ends.through_vote(vertices.row(rail.front()).transpose(),
-                                              -end_direction(vertices, rail, false), region.patch,
-                                              radius);
-        int last_is_root = ends.through_vote(vertices.row(rail.back()).transpose(),
-                                             end_direction(vertices, rail, true), region.patch,
-                                             radius);
-        int score = first_is_root - last_is_root;  // > 0: the rail runs as decided
+        int score = rail_end_score(vertices, rail, through_vote);  // > 0: runs as decided
         forward += score > 0 ? 1 : 0;
         backward += score == -2 ? 1 : 0;  // both ends say it runs backwards
       }
@@ -611,9 +621,9 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
       height_and_texture_overrule_ids(regions, thresholds, conventions);
   decide_by_continuation(vertices, regions,
                          static_cast<float>(params.continuation_radius_h * head_height_m));
-  stats.continuation_overruled_ids = continuation_overrules_ids(
-      vertices, regions, thresholds,
-      static_cast<float>(params.continuation_radius_h * head_height_m));
+  stats.continuation_overruled_ids =
+      continuation_overrules_ids(vertices, regions, thresholds,
+                                 static_cast<float>(params.continuation_radius_h * head_height_m));
   stats.paint_overruled_continuation = paint_overrules(
       regions, thresholds, params.convention_min_agreement, OrientationRule::continuation);
   for (RegionRails& region : regions)
