@@ -287,15 +287,10 @@ class StrandEndIndex {
   /// 0 no neighbour.
   int vote(const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch,
            float radius) const {
-    constexpr float aligned = 0.5f;  // cos 60 degrees
-    if (!index_) return 0;
-    for (int32_t id : index_->within(point, radius)) {  // nearest first
-      const StrandEnd& other = ends_[static_cast<size_t>(id)];
-      if (other.patch == patch) continue;
+    return first_vote(point, patch, radius, [&](const StrandEnd& other) {
       if (other.is_root) return -1;
       return -outward.dot(other.flow) > aligned ? 1 : -1;
-    }
-    return 0;
+    });
   }
 
   /// What a strand end at `point` with outward direction `outward` is, judged only by
@@ -306,18 +301,30 @@ class StrandEndIndex {
   /// strands converging at a band) do not count.
   int through_vote(const Eigen::Vector3f& point, const Eigen::Vector3f& outward, int32_t patch,
                    float radius) const {
-    constexpr float aligned = 0.5f;  // cos 60 degrees
+    return first_vote(point, patch, radius, [&](const StrandEnd& other) {
+      if (other.is_root && outward.dot(other.flow) > aligned) return -1;
+      if (!other.is_root && -outward.dot(other.flow) > aligned) return 1;
+      return 0;
+    });
+  }
+
+ private:
+  static constexpr float aligned = 0.5f;  // cos 60 degrees
+
+  /// The first non-zero `judge(end)` over the ends of other patches' strands within
+  /// `radius` of `point`, nearest first; 0 if none.
+  template <typename Judge>
+  int first_vote(const Eigen::Vector3f& point, int32_t patch, float radius,
+                 const Judge& judge) const {
     if (!index_) return 0;
     for (int32_t id : index_->within(point, radius)) {  // nearest first
       const StrandEnd& other = ends_[static_cast<size_t>(id)];
       if (other.patch == patch) continue;
-      if (other.is_root && outward.dot(other.flow) > aligned) return -1;
-      if (!other.is_root && -outward.dot(other.flow) > aligned) return 1;
+      if (int vote = judge(other); vote != 0) return vote;
     }
     return 0;
   }
 
- private:
   std::vector<StrandEnd> ends_;
   std::optional<PointIndex> index_;
 };
