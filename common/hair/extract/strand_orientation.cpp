@@ -62,8 +62,7 @@ std::optional<OrientationDecision> decide_orientation(
       return OrientationDecision{ids_reverse, OrientationRule::vertex_order,
                                  distance_decides ? agreement : 0.75f * agreement};
     }
-    if (std::abs(evidence.height_slope) >= thresholds.height_min_slope &&
-        evidence.head_distance_min_m >= thresholds.height_min_head_distance_m) {
+    if (height_decides && evidence.head_distance_min_m >= thresholds.height_min_head_distance_m) {
       return OrientationDecision{height_reverse,
                                  height_reverse == ids_reverse ? OrientationRule::vertex_order
                                                                : OrientationRule::scalp_distance,

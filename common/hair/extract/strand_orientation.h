@@ -87,7 +87,10 @@ bool alpha_fade_decides(const OrientationEvidence& evidence,
 ///  1. ordered rails that agree decide (vertex_order), unless the head distance decides
 ///     the other way, or the mesh's ids are not to be trusted; when the two disagree off
 ///     the head, a decisive height slope settles it (hair falls; a braid's pieces weave toward and
-///     away from the head as they cross, so there the head distance misleads);
+///     away from the head as they cross, so there the head distance misleads); where the
+///     head distance does not decide but leans (`scalp_distance_lean_slope`) the way a
+///     decisive height slope goes, against the ids, the height decides (hair lying down
+///     the side of the head, numbered tip to root);
 ///  2. else a decisive head-distance slope decides (scalp_distance);
 ///  3. (continuation is decided between passes, from the neighbours: see extract.cpp)
 ///  3b. else a decisive fade of the painted alpha: the tips are where it fades (alpha_fade);
