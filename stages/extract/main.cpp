@@ -39,12 +39,14 @@ int main(int argc, char** argv) {
     spdlog::info(
         "{}: orientation rules: vertex_order {}, scalp_distance {}, continuation {}, uv {}, "
         "height {}, parting {}, alpha_fade {} ({} regions' vertex ids and {} continuations "
-        "overruled by their paint; {} regions' vertex ids overruled by the hair running on "
-        "through their ends, {} by their height and texture)",
+        "overruled by their paint; {} regions' vertex ids or head distance overruled by the hair "
+        "running on through their ends; {} regions' vertex ids overruled by their height and "
+        "texture; {} regions' head distance by their ids and texture)",
         hair_path, stats.groups_by_rule[0], stats.groups_by_rule[1], stats.groups_by_rule[2],
         stats.groups_by_rule[3], stats.groups_by_rule[4], stats.groups_by_rule[5],
         stats.groups_by_rule[6], stats.paint_overruled_ids, stats.paint_overruled_continuation,
-        stats.continuation_overruled_ids, stats.height_and_texture_overruled_ids);
+        stats.continuation_overruled_ids, stats.height_and_texture_overruled_ids,
+        stats.ids_and_texture_overruled_head_distance);
     spdlog::info(
         "{}: rails chosen by chain length in {} regions, texture axis {}, painted flow {} "
         "({} of them across the longer chains); {} patches traced along the paint",

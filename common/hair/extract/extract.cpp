@@ -380,9 +380,27 @@ int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRail
   return count;
 }
 
+/// Whether a region's direction rests on one cue that the hair running on through its
+/// ends may overrule: its vertex ids with the head distance silent, or its head distance
+/// against ids that agree among themselves (a braid's pieces weave towards and away from
+/// the head as they cross, so off the head its distance misleads where the height does
+/// not settle it; turned, such a piece follows its ids and its neighbours, two cues
+/// against one).
+bool decided_by_one_cue(const RegionRails& region, const OrientationThresholds& thresholds) {
+  const OrientationEvidence& e = region.evidence;
+  const bool distance_decides =
+      std::abs(e.scalp_distance_slope) >= thresholds.scalp_distance_min_slope;
+  if (region.decision->rule == OrientationRule::vertex_order) return !distance_decides;
+  const bool ids_agree =
+      e.has_ordered_rails && std::abs(e.vertex_order_vote) >= thresholds.vertex_order_min_vote;
+  return region.decision->rule == OrientationRule::scalp_distance && distance_decides &&
+         ids_agree && (e.vertex_order_vote < 0) != region.decision->reverse;
+}
+
 /// Where a region off the head (every rail end at least `height_min_head_distance_m`
-/// from it) had its direction decided by its vertex ids with the head distance silent
-/// (a braid's piece, a card in the middle of a hanging lock), and the hair
+/// from it) had its direction decided by one cue (decided_by_one_cue(): its vertex ids
+/// with the head distance silent, as a braid's piece or a card in the middle of a
+/// hanging lock, or its head distance against its ids), and the hair
 /// that runs on through its rails' ends says the other way, the hair wins: on at least
 /// half of its rails both ends say it runs backwards (StrandEndIndex::through_vote(),
 /// which ignores ends lying beside the rail's), three quarters of the rails that vote.
@@ -401,10 +419,9 @@ int continuation_overrules_ids(const Points3f& vertices, std::vector<RegionRails
     std::vector<size_t> to_turn;
     for (size_t r = 0; r < regions.size(); ++r) {
       const RegionRails& region = regions[r];
-      if (!region.decision || region.decision->rule != OrientationRule::vertex_order ||
-          region.open_rails.empty() ||
-          std::abs(region.evidence.scalp_distance_slope) >= thresholds.scalp_distance_min_slope ||
-          region.evidence.head_distance_min_m < thresholds.height_min_head_distance_m)
+      if (!region.decision || region.open_rails.empty() ||
+          region.evidence.head_distance_min_m < thresholds.height_min_head_distance_m ||
+          !decided_by_one_cue(region, thresholds))
         continue;
       auto through_vote = [&](const Eigen::Vector3f& point, const Eigen::Vector3f& outward) {
         return ends.through_vote(point, outward, region.patch, radius);
@@ -614,6 +631,35 @@ int height_and_texture_overrule_ids(std::vector<RegionRails>& regions,
   return turned;
 }
 
+/// Where a region off the head had its direction decided by its head distance against
+/// vertex ids that agree among themselves, with the height silent, and its texture's v
+/// (read with the mesh's convention, by at least `uv_min_growth`) says what the ids say,
+/// the two win: a braid's pieces weave towards and away from the head as they cross, so
+/// off the head its distance misleads, and the ids and the texture are laid along each
+/// card together. Returns how many regions it turned.
+int ids_and_texture_overrule_head_distance(std::vector<RegionRails>& regions,
+                                           const OrientationThresholds& thresholds,
+                                           const MeshConventions& conventions) {
+  if (!conventions.uv_growth_sign) return 0;
+  int turned = 0;
+  for (RegionRails& region : regions) {
+    const OrientationEvidence& e = region.evidence;
+    if (!region.decision || region.decision->rule != OrientationRule::scalp_distance ||
+        region.evidence.head_distance_min_m < thresholds.height_min_head_distance_m ||
+        !decided_by_one_cue(region, thresholds) || !e.uv_growth ||
+        std::abs(*e.uv_growth) < thresholds.uv_min_growth)
+      continue;
+    const bool ids_reverse = e.vertex_order_vote < 0;
+    const bool uv_reverse = (*e.uv_growth > 0 ? 1 : -1) != *conventions.uv_growth_sign;
+    if (uv_reverse != ids_reverse) continue;
+    region.decision = OrientationDecision{
+        ids_reverse, OrientationRule::uv,
+        static_cast<float>(std::min(std::abs(*e.uv_growth), std::abs(e.vertex_order_vote)))};
+    ++turned;
+  }
+  return turned;
+}
+
 /// Decides every region's direction: confident regions first, then continuation from
 /// decided neighbours, then the mesh's conventions for the rest.
 void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regions,
@@ -626,6 +672,8 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
                                               OrientationRule::vertex_order);
   stats.height_and_texture_overruled_ids =
       height_and_texture_overrule_ids(regions, thresholds, conventions);
+  stats.ids_and_texture_overruled_head_distance =
+      ids_and_texture_overrule_head_distance(regions, thresholds, conventions);
   decide_by_continuation(vertices, regions,
                          static_cast<float>(params.continuation_radius_h * head_height_m));
   stats.continuation_overruled_ids =
@@ -640,12 +688,13 @@ void decide_directions(const Points3f& vertices, std::vector<RegionRails>& regio
     const OrientationEvidence& e = region.evidence;
     spdlog::debug(
         "patch {} region {}: ids vote {:.2f}, head distance slope {:.2f}, v growth {}, height "
-        "slope {:.2f}, alpha fade vote {} (fall {:.3f} a face, {:.3f} a rail): {}{}",
+        "slope {:.2f}, alpha fade vote {} (fall {:.3f} a face, {:.3f} a rail), nearest end "
+        "{:.4f} m from the head: {}{}",
         region.patch, region.region_in_patch, e.vertex_order_vote, e.scalp_distance_slope,
         e.uv_growth ? fmt::format("{:.2f}", *e.uv_growth) : "none", e.height_slope,
         e.alpha_fade_vote ? fmt::format("{:.2f}", *e.alpha_fade_vote) : "none",
-        e.alpha_fade_mean_fall, e.alpha_fade_rail_fall, orientation_rule_name(region.decision->rule),
-        region.decision->reverse ? ", reversed" : "");
+        e.alpha_fade_mean_fall, e.alpha_fade_rail_fall, e.head_distance_min_m,
+        orientation_rule_name(region.decision->rule), region.decision->reverse ? ", reversed" : "");
   }
 }
 

@@ -107,12 +107,16 @@ struct ExtractStats {
   /// test), turned after continuation: continuation still runs from the regions as they
   /// were, since on layered cards it carries a reading on too far (bob01).
   int64_t paint_overruled_continuation = 0;
-  /// Regions whose vertex ids decided with the head distance silent, turned because the
-  /// hair running on through their rails' ends said the other way.
+  /// Regions off the head decided by one cue (their vertex ids with the head distance
+  /// silent, or their head distance against their ids), turned because the hair running
+  /// on through their rails' ends said the other way.
   int64_t continuation_overruled_ids = 0;
   /// Regions off the head whose vertex ids decided with the head distance silent, turned
   /// because their height and their texture's v both said the other way.
   int64_t height_and_texture_overruled_ids = 0;
+  /// Regions off the head whose head distance decided against their vertex ids, with the
+  /// height silent, turned because their ids and their texture's v both said the other way.
+  int64_t ids_and_texture_overruled_head_distance = 0;
 };
 
 /// Everything extract.h5 holds (schemas/extract.json), in metres.

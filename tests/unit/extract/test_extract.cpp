@@ -240,6 +240,51 @@ TEST(ExtractStrands, APieceOnTheHeadKeepsItsIdsWhereStrandsMeetHeadOn) {
   EXPECT_EQ(result.group_rule[1], OrientationRule::vertex_order);
 }
 
+/// A lock of `pieces` cards wound level half round the back of the head (2.5 rad),
+/// numbered and textured root to tip (`with_uv`), 5.5 cm off the head but for piece
+/// `weaving`, which weaves in to 2.5 cm as a braid's piece crosses towards the head: its
+/// head distance falls by 3 cm over its 4-7 cm, so it alone says that piece runs from its
+/// far end, against its ids; the pieces after it run on at 2.5 cm.
+PolyMesh lock_with_a_piece_weaving_in(int pieces, int weaving, bool with_uv) {
+  PolyMesh mesh;
+  const double piece_rad = 2.5 / pieces, gap_rad = 0.01, far_m = 0.155, near_m = 0.125;
+  for (int k = 0; k < pieces; ++k) {
+    std::vector<Eigen::Vector3d> centre;
+    for (int i = 0; i <= 6; ++i) {
+      double azimuth = 0.3 + piece_rad * k + (piece_rad - gap_rad) * i / 6.0;
+      double radius_m = k < weaving   ? far_m
+                        : k > weaving ? near_m
+                                      : far_m + (near_m - far_m) * i / 6.0;
+      centre.push_back({radius_m * std::cos(azimuth), 1.6, -radius_m * std::sin(azimuth)});
+    }
+    testing::append_mesh(mesh, hair_strip(centre, Eigen::Vector3d::UnitY(), 0.02,
+                                          {.rails = 3, .segments = 6, .with_uv = with_uv}));
+  }
+  return mesh;
+}
+
+TEST(ExtractStrands, APieceWeavingTowardsTheHeadFollowsItsIdsAndTheLock) {
+  // Untextured: the head distance decides the weaving piece against its ids, and the
+  // pieces on either side run on through both its ends: two cues against one, so it is
+  // turned back (rule continuation).
+  ExtractResult untextured = extract_strands(lock_with_a_piece_weaving_in(5, 2, false),
+                                             snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(untextured.group_count(), 5);
+  EXPECT_EQ(untextured.stats.continuation_overruled_ids, 1);
+  EXPECT_EQ(untextured.group_rule[2], OrientationRule::continuation);
+  for (int32_t g = 0; g < 5; ++g) EXPECT_TRUE(group_runs_along_the_lock(untextured, g)) << g;
+
+  // Textured root to tip as the other seven pieces are (the mesh's convention): the
+  // texture's v backs the ids before continuation is asked (rule uv).
+  ExtractResult textured =
+      extract_strands(lock_with_a_piece_weaving_in(8, 2, true), snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(textured.group_count(), 8);
+  EXPECT_EQ(textured.stats.uv_growth_sign, 1);
+  EXPECT_EQ(textured.stats.ids_and_texture_overruled_head_distance, 1);
+  EXPECT_EQ(textured.group_rule[2], OrientationRule::uv);
+  for (int32_t g = 0; g < 8; ++g) EXPECT_TRUE(group_runs_along_the_lock(textured, g)) << g;
+}
+
 /// Eight strips hanging from the head, numbered and textured root to tip (the head
 /// distance decides them and teaches extract the mesh's texture convention: 8 of the 9
 /// regions' v grows from the end decided as the root, over the 85% asked), and one
