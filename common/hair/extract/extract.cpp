@@ -209,13 +209,21 @@ MeshConventions mesh_conventions(std::vector<RegionRails>& regions,
   if (auto share = share_true(ids_agree_with_distance); share && *share < 0.5)
     conventions.trust_vertex_order = false;
 
+  // The texture's convention is learnt from the regions decided, but not from those that
+  // only their ids decided against a decisive height: a card numbered tip to root lying
+  // on the head is one of those, and so is hair brushed up, so neither may teach it.
   std::vector<bool> v_grows_to_tip;
   for (RegionRails& region : regions) {
     if (!conventions.trust_vertex_order) region.evidence.has_ordered_rails = false;
     region.decision = decide_orientation(region.evidence, thresholds, std::nullopt);
-    const auto& growth = region.evidence.uv_growth;
-    if (region.decision && growth && std::abs(*growth) >= thresholds.uv_min_growth)
-      v_grows_to_tip.push_back((*growth > 0) != region.decision->reverse);
+    const OrientationEvidence& e = region.evidence;
+    const bool ids_against_height = region.decision &&
+                                    region.decision->rule == OrientationRule::vertex_order &&
+                                    std::abs(e.height_slope) >= thresholds.height_min_slope &&
+                                    (e.height_slope < 0) != region.decision->reverse;
+    if (region.decision && !ids_against_height && e.uv_growth &&
+        std::abs(*e.uv_growth) >= thresholds.uv_min_growth)
+      v_grows_to_tip.push_back((*e.uv_growth > 0) != region.decision->reverse);
   }
   if (auto share = share_true(v_grows_to_tip)) {
     if (*share >= params.convention_min_agreement) conventions.uv_growth_sign = 1;
