@@ -199,15 +199,21 @@ MeshConventions mesh_conventions(std::vector<RegionRails>& regions,
                                  const OrientationThresholds& thresholds,
                                  const ExtractParams& params) {
   MeshConventions conventions;
-  std::vector<bool> ids_agree_with_distance;
+  // The ids are ignored for the whole mesh when the head distance contradicts them on
+  // most of the regions where both decide, and those regions are at least half of the
+  // regions whose ids agree among themselves: where the head distance decides only a
+  // few regions (hair lying on the head; wavy or braided pieces nearing it), a handful
+  // of cards numbered tip to root must not cost every card its ids.
+  int64_t ordered = 0, agree = 0, disagree = 0;
   for (const RegionRails& region : regions) {
     const OrientationEvidence& e = region.evidence;
-    if (e.has_ordered_rails && std::abs(e.vertex_order_vote) >= thresholds.vertex_order_min_vote &&
-        std::abs(e.scalp_distance_slope) >= thresholds.scalp_distance_min_slope)
-      ids_agree_with_distance.push_back((e.vertex_order_vote < 0) == (e.scalp_distance_slope < 0));
+    if (!e.has_ordered_rails || std::abs(e.vertex_order_vote) < thresholds.vertex_order_min_vote)
+      continue;
+    ++ordered;
+    if (std::abs(e.scalp_distance_slope) < thresholds.scalp_distance_min_slope) continue;
+    ((e.vertex_order_vote < 0) == (e.scalp_distance_slope < 0) ? agree : disagree) += 1;
   }
-  if (auto share = share_true(ids_agree_with_distance); share && *share < 0.5)
-    conventions.trust_vertex_order = false;
+  if (disagree > agree && 2 * disagree >= ordered) conventions.trust_vertex_order = false;
 
   // The texture's convention is learnt from the regions decided, but not from those that
   // only their ids decided against a decisive height: a card numbered tip to root lying

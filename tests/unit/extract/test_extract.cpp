@@ -279,6 +279,46 @@ TEST(ExtractStrands, ACapOfStripsNumberedEitherWayLearnsItsTextureFromTheRestAnd
   }
 }
 
+/// `count` strips hanging from the head at azimuths 0.5 rad apart from `first_azimuth`,
+/// the first `reversed` numbered tip to root: the head distance decides each of them.
+void append_hanging_strips(PolyMesh& mesh, int count, int reversed, double first_azimuth) {
+  for (int i = 0; i < count; ++i) {
+    Eigen::Vector3d root = head_point(first_azimuth + 0.5 * i, 1.0);
+    Eigen::Vector3d outward = (root - Eigen::Vector3d(0, 1.6, 0)).normalized();
+    Eigen::Vector3d across = outward.cross(Eigen::Vector3d::UnitY()).normalized();
+    testing::append_mesh(mesh, hair_strip(falling_polyline(root, outward, 0.3, 10, 0.15), across,
+                                          0.03, {.segments = 10, .reverse_order = i < reversed}));
+  }
+}
+
+TEST(ExtractStrands, IdsAreIgnoredWhereTheHeadDistanceContradictsMostOfThemNotAHandful) {
+  // Twelve hanging strips, nine numbered tip to root: the head distance decides all and
+  // contradicts the ids on most, so the mesh's ids are not trusted.
+  PolyMesh backwards;
+  append_hanging_strips(backwards, 12, 9, 0.0);
+  ExtractResult ignored = extract_strands(backwards, snowman_body(), {}, "hair", "body");
+  EXPECT_FALSE(ignored.stats.vertex_order_trusted);
+  // A cap of nine strips lying on the head, numbered right (the head distance silent),
+  // and three strips hanging below it, two numbered tip to root: the head distance
+  // contradicts the ids on two of the three regions where it decides, but those are
+  // two of twelve regions with ordered ids, so the ids are kept.
+  PolyMesh cap = short_cap_lying_on_the_head(0);
+  append_hanging_strips(cap, 3, 2, 0.2);
+  ExtractResult kept = extract_strands(cap, snowman_body(), {}, "hair", "body");
+  ASSERT_EQ(kept.group_count(), 12);
+  EXPECT_TRUE(kept.stats.vertex_order_trusted);
+  for (int32_t g = 0; g < 9; ++g) EXPECT_EQ(kept.group_rule[g], OrientationRule::vertex_order) << g;
+  for (int32_t s = 0; s < kept.strands.strand_count(); ++s) {
+    auto strand = kept.strands.strand(s);
+    Eigen::Vector3f first = strand.row(0).transpose(),
+                    last = strand.row(strand.rows() - 1).transpose();
+    EXPECT_LT(head_distance(first), head_distance(last) + 1e-3) << s;  // from the head
+    if (s < 27) {  // the cap's strips, from the higher end
+      EXPECT_GT(first.y(), last.y()) << s;
+    }
+  }
+}
+
 /// A lock of `pieces` cards wound level half round the back of the head (2.5 rad),
 /// numbered and textured root to tip (`with_uv`), 5.5 cm off the head but for piece
 /// `weaving`, which weaves in to 2.5 cm as a braid's piece crosses towards the head: its
