@@ -394,12 +394,12 @@ int decide_by_continuation_once(const Points3f& vertices, std::vector<RegionRail
   return count;
 }
 
-/// Whether a region's direction rests on one cue that the hair running on through its
-/// ends may overrule: its vertex ids with the head distance silent, or its head distance
-/// against ids that agree among themselves (a braid's pieces weave towards and away from
-/// the head as they cross, so off the head its distance misleads where the height does
-/// not settle it; turned, such a piece follows its ids and its neighbours, two cues
-/// against one).
+/// Whether a region's direction rests on geometry alone, which the hair running on
+/// through its ends may overrule: its vertex ids with the head distance silent, or its
+/// head distance (with the height, or without it) against ids that agree among
+/// themselves. A braid's pieces weave towards and away from the head and tilt as they
+/// cross, so off the head their distance and height mislead; turned, such a piece
+/// follows its ids and the pieces before and after it.
 bool decided_by_one_cue(const RegionRails& region, const OrientationThresholds& thresholds) {
   const OrientationEvidence& e = region.evidence;
   const bool distance_decides =
@@ -645,12 +645,15 @@ int height_and_texture_overrule_ids(std::vector<RegionRails>& regions,
   return turned;
 }
 
-/// Where a region off the head had its direction decided by its head distance against
-/// vertex ids that agree among themselves, with the height silent, and its texture's v
-/// (read with the mesh's convention, by at least `uv_min_growth`) says what the ids say,
-/// the two win: a braid's pieces weave towards and away from the head as they cross, so
-/// off the head its distance misleads, and the ids and the texture are laid along each
-/// card together. Returns how many regions it turned.
+/// Where a region off the head had its direction decided by its head distance (with
+/// the height, or without it) against vertex ids that agree among themselves, and its
+/// texture's v (read with the mesh's convention, by at least `uv_min_growth`) says what
+/// the ids say, the two win: a braid's pieces weave towards and away from the head and
+/// tilt as they cross, so off the head its distance and height mislead, while the ids
+/// and the texture are laid along each card together, and the texture on purpose (a
+/// card whose painted tips point up would show). With the height silent only, 14 more
+/// of the corpus's braid pieces stay backwards (docs/extract.md). Returns how many
+/// regions it turned.
 int ids_and_texture_overrule_head_distance(std::vector<RegionRails>& regions,
                                            const OrientationThresholds& thresholds,
                                            const MeshConventions& conventions) {

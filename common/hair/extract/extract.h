@@ -114,8 +114,9 @@ struct ExtractStats {
   /// Regions off the head whose vertex ids decided with the head distance silent, turned
   /// because their height and their texture's v both said the other way.
   int64_t height_and_texture_overruled_ids = 0;
-  /// Regions off the head whose head distance decided against their vertex ids, with the
-  /// height silent, turned because their ids and their texture's v both said the other way.
+  /// Regions off the head whose head distance (with the height or without) decided
+  /// against their vertex ids, turned because their ids and their texture's v both said
+  /// the other way.
   int64_t ids_and_texture_overruled_head_distance = 0;
 };
 
