@@ -614,6 +614,18 @@ int paint_overrules(std::vector<RegionRails>& regions, const OrientationThreshol
   return turned;
 }
 
+/// Whether a region's texture's v, read with the mesh's convention (learnt from its
+/// confidently decided regions), says the region runs backwards; nullopt where it does
+/// not decide (no texture, v growing by less than `uv_min_growth`, or no convention).
+std::optional<bool> texture_says_reverse(const OrientationEvidence& e,
+                                         const OrientationThresholds& thresholds,
+                                         const MeshConventions& conventions) {
+  if (!conventions.uv_growth_sign || !e.uv_growth ||
+      std::abs(*e.uv_growth) < thresholds.uv_min_growth)
+    return std::nullopt;
+  return (*e.uv_growth > 0 ? 1 : -1) != *conventions.uv_growth_sign;
+}
+
 /// Where a region's vertex ids decided its direction with the head distance silent, and
 /// both its height (the higher end is the root, by at least `height_min_slope`) and its
 /// texture's v (by at least `uv_min_growth`, read with the mesh's convention, learnt
@@ -625,18 +637,16 @@ int paint_overrules(std::vector<RegionRails>& regions, const OrientationThreshol
 int height_and_texture_overrule_ids(std::vector<RegionRails>& regions,
                                     const OrientationThresholds& thresholds,
                                     const MeshConventions& conventions) {
-  if (!conventions.uv_growth_sign) return 0;
   int turned = 0;
   for (RegionRails& region : regions) {
     const OrientationEvidence& e = region.evidence;
+    const std::optional<bool> uv_reverse = texture_says_reverse(e, thresholds, conventions);
     if (!region.decision || region.decision->rule != OrientationRule::vertex_order ||
-        std::abs(e.scalp_distance_slope) >= thresholds.scalp_distance_min_slope || !e.uv_growth ||
-        std::abs(*e.uv_growth) < thresholds.uv_min_growth ||
+        std::abs(e.scalp_distance_slope) >= thresholds.scalp_distance_min_slope || !uv_reverse ||
         std::abs(e.height_slope) < thresholds.height_min_slope)
       continue;
     const bool height_reverse = e.height_slope < 0;
-    const bool uv_reverse = (*e.uv_growth > 0 ? 1 : -1) != *conventions.uv_growth_sign;
-    if (height_reverse != uv_reverse || height_reverse == region.decision->reverse) continue;
+    if (height_reverse != *uv_reverse || height_reverse == region.decision->reverse) continue;
     region.decision =
         OrientationDecision{height_reverse, OrientationRule::height,
                             static_cast<float>(std::min(std::abs(e.height_slope), 1.0))};
@@ -657,18 +667,16 @@ int height_and_texture_overrule_ids(std::vector<RegionRails>& regions,
 int ids_and_texture_overrule_head_distance(std::vector<RegionRails>& regions,
                                            const OrientationThresholds& thresholds,
                                            const MeshConventions& conventions) {
-  if (!conventions.uv_growth_sign) return 0;
   int turned = 0;
   for (RegionRails& region : regions) {
     const OrientationEvidence& e = region.evidence;
+    const std::optional<bool> uv_reverse = texture_says_reverse(e, thresholds, conventions);
     if (!region.decision || region.decision->rule != OrientationRule::scalp_distance ||
-        region.evidence.head_distance_min_m < thresholds.height_min_head_distance_m ||
-        !decided_by_one_cue(region, thresholds) || !e.uv_growth ||
-        std::abs(*e.uv_growth) < thresholds.uv_min_growth)
+        e.head_distance_min_m < thresholds.height_min_head_distance_m ||
+        !decided_by_one_cue(region, thresholds) || !uv_reverse)
       continue;
     const bool ids_reverse = e.vertex_order_vote < 0;
-    const bool uv_reverse = (*e.uv_growth > 0 ? 1 : -1) != *conventions.uv_growth_sign;
-    if (uv_reverse != ids_reverse) continue;
+    if (*uv_reverse != ids_reverse) continue;
     region.decision = OrientationDecision{
         ids_reverse, OrientationRule::uv,
         static_cast<float>(std::min(std::abs(*e.uv_growth), std::abs(e.vertex_order_vote)))};
