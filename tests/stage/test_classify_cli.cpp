@@ -214,9 +214,9 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
 
   // Hair it has not seen: hair-synth's low tail at a seed outside the corpus's. Asked to be
   // surer, no cluster becomes surer, the same ones are decided by the criteria, and the
-  // log lists the unsure ones (at 0.99, the two its criteria do not decide: 0.86 and 0.42
-  // with the models of 2026-11-27, 0.56-0.92 with session 7's; ponytail01's front crown
-  // was the unsure one of earlier models).
+  // log lists the unsure ones (at 0.99, its tail: 0.61 with the models of session 11,
+  // whose cap and band are 1.0; 0.86 and 0.42 with session 10's, 0.56-0.92 with session
+  // 7's; ponytail01's front crown was the unsure one of earlier models).
   const fs::path data = directory() / "unseen";
   fs::create_directories(data);
   auto synth = run_command(kBin / "hair-synth",
