@@ -26,6 +26,11 @@ int main(int argc, char** argv) {
   p.add("scalp_cover_h", params.scalp_cover_h,
         "scalp triangles within this distance of a root-type input strand carry roots, in H",
         hair::ParamRange::above(0));
+  p.add("min_typed_root_scalp_share", params.min_typed_root_scalp_share,
+        "where root-type strands cover less than this share of the scalp that strands of any "
+        "type cover, roots take any strand (the types do not say where the roots are); 0 "
+        "turns this off",
+        hair::ParamRange::closed(0, 1));
   p.add("standing_cover_h", params.standing_cover_h,
         "...but where that strand stands off the scalp (over 45 degrees), only within this "
         "distance of it along the scalp (a spike grows from its base), in H",
@@ -99,12 +104,15 @@ int main(int argc, char** argv) {
     spdlog::info(
         "{}: {} strands, {} points, {} pushed out of the body, {} continuations ({} "
         "into another cluster); {} strands joined the cards feeding a continued cluster; {} "
-        "ended where the card they followed dives into the body",
+        "ended where the card they followed dives into the body; roots from {} (root-type "
+        "strands cover {:.0f}% of the scalp under the hair)",
         extract_path, result.strands.strand_count(), result.strands.point_count(),
         result.points_pushed_out,
         result.continuations_same_cluster + result.continuations_other_cluster,
         result.continuations_other_cluster, result.strands_joining_continued_flow,
-        result.strands_ended_at_body);
+        result.strands_ended_at_body,
+        result.roots_from_any_type ? "strands of any type" : "root-type strands",
+        100 * result.typed_root_scalp_share);
 
     hair::AtomicFile output(app.output_path());
     hair::h5::File file = hair::h5::File::create(output.temporary_path(), app.output_path());

@@ -25,6 +25,10 @@ int main(int argc, char** argv) {
   p.add("neighbour_distance_h", params.neighbour_distance_h,
         "a group is close to another's beginning or end within this distance, in H",
         hair::ParamRange::above(0));
+  p.add("root_scalp_distance_h", params.root_scalp_distance_h,
+        "a group starting this close to the scalp, in H, has before it only the groups ending "
+        "near its start; 0 turns this off",
+        hair::ParamRange::at_least(0));
   p.add("connect_angle_deg", params.connect_angle_deg,
         "largest angle between a root group's end and a nearby group's start for the two to "
         "be connected; 0 takes it from the distribution of those angles (Otsu)",
@@ -45,10 +49,12 @@ int main(int argc, char** argv) {
     hair::h5::File extract = hair::h5::File::open_read_only(extract_path);
     hair::ExtractedStrands extracted = hair::read_extracted_strands(extract);
     hair::ExtractedBody body = hair::read_extracted_body(extract);
-    hair::GroupTypes types = hair::group_types(extracted.strands, extracted.group_first_strand,
-                                               extracted.head_height_m, params);
-    types.start_scalp_distance_m = hair::start_scalp_distances(types.centre_strands, body.vertices,
-                                                               body.triangles, body.scalp_triangle);
+    hair::StrandSet centres =
+        hair::centre_strands(extracted.strands, extracted.group_first_strand, params.centre_points);
+    std::vector<double> start_scalp_distance_m =
+        hair::start_scalp_distances(centres, body.vertices, body.triangles, body.scalp_triangle);
+    hair::GroupTypes types = hair::group_types_from_centres(
+        std::move(centres), std::move(start_scalp_distance_m), extracted.head_height_m, params);
     std::array<int, 4> counts{};
     for (hair::GroupType type : types.type) ++counts[static_cast<size_t>(type)];
     spdlog::info(

@@ -336,6 +336,8 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
       {{extract, types, clusters, "--scalp_cover_h", "1e-6"}, "no scalp triangle"},
       {{extract, types, clusters, "--standing_cover_h", "0"}, "standing_cover_h"},
       {{extract, types, clusters, "--standing_cover_h", "nan"}, "standing_cover_h"},
+      {{extract, types, clusters, "--min_typed_root_scalp_share", "1.5"},
+       "min_typed_root_scalp_share"},
       {{extract, types, clusters, "--gather_along_field_h", "-0.5"}, "gather_along_field_h"},
       {{extract, types, clusters, "--gather_along_field_h", "nan"}, "gather_along_field_h"},
       {{extract, types}, "CLUSTERS_H5"},

@@ -6,6 +6,8 @@
 // extract stage reads a mesh's textures.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "hair/cluster/group_scalp_distance.h"
 #include "hair/cluster/hair_clustering.h"
@@ -22,6 +24,18 @@ struct ClusteredInMemory {
   double head_height_m = 0;
 };
 
+/// typeify of an extract result in memory, as the stage runs it: with the distance from
+/// every group's start to the body's scalp.
+inline GroupTypes typeify_in_memory(const ExtractResult& extract,
+                                    const TypeifyParams& params = TypeifyParams{}) {
+  StrandSet centres =
+      centre_strands(extract.strands, extract.group_first_strand, params.centre_points);
+  std::vector<double> start_scalp_distance_m = start_scalp_distances(
+      centres, extract.body_vertices, extract.body_triangles, extract.scalp_triangle);
+  return group_types_from_centres(std::move(centres), std::move(start_scalp_distance_m),
+                                  extract.head.head_height, params);
+}
+
 inline ClusteredInMemory cluster_in_memory(const PolyMesh& mesh, const PolyMesh& body,
                                            const std::string& name) {
   ClusteredInMemory run;
@@ -30,10 +44,7 @@ inline ClusteredInMemory cluster_in_memory(const PolyMesh& mesh, const PolyMesh&
                                 load_painted_textures(mesh.materials, params.painted_flow, name));
   run.head_height_m = run.extract.head.head_height;
   const double h = run.head_height_m;
-  run.types = group_types(run.extract.strands, run.extract.group_first_strand, h, TypeifyParams{});
-  run.types.start_scalp_distance_m =
-      start_scalp_distances(run.types.centre_strands, run.extract.body_vertices,
-                            run.extract.body_triangles, run.extract.scalp_triangle);
+  run.types = typeify_in_memory(run.extract);
   run.middle =
       cluster_middle_groups(run.types.centre_strands, run.types.type, h, GraphClusteringParams{});
   run.clusters = cluster_hair(run.types.centre_strands, run.types.type, run.middle.middle_cluster,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "hair/core/error.h"
 #include "hair/geom/point_index.h"
@@ -73,9 +75,22 @@ std::optional<double> connection_angle_threshold(const std::vector<double>& angl
 
 GroupTypes group_types(const StrandSet& strands, const std::vector<int32_t>& first_strand,
                        double head_height_m, const TypeifyParams& params) {
-  auto group_count = static_cast<int64_t>(first_strand.size()) - 1;
+  return group_types_from_centres(centre_strands(strands, first_strand, params.centre_points), {},
+                                  head_height_m, params);
+}
+
+GroupTypes group_types_from_centres(StrandSet centres_in,
+                                    std::vector<double> start_scalp_distance_m,
+                                    double head_height_m, const TypeifyParams& params) {
+  auto group_count = static_cast<int64_t>(centres_in.strand_count());
+  if (!start_scalp_distance_m.empty() &&
+      start_scalp_distance_m.size() != static_cast<size_t>(group_count))
+    throw Error::bad_input("", "scalp distances (" + std::to_string(start_scalp_distance_m.size()) +
+                                   ") do not match the groups (" + std::to_string(group_count) +
+                                   ")");
   GroupTypes result;
-  result.centre_strands = centre_strands(strands, first_strand, params.centre_points);
+  result.centre_strands = std::move(centres_in);
+  result.start_scalp_distance_m = std::move(start_scalp_distance_m);
   const StrandSet& centres = result.centre_strands;
   int points = params.centre_points;
   int half = points / 2;
@@ -104,9 +119,19 @@ GroupTypes group_types(const StrandSet& strands, const std::vector<int32_t>& fir
   result.before.resize(static_cast<size_t>(group_count));
   result.after.resize(static_cast<size_t>(group_count));
   result.after_angle_rad.resize(static_cast<size_t>(group_count));
+  double root_scalp_distance_m = params.root_scalp_distance_h * head_height_m;
   for (int64_t g = 0; g < group_count; ++g) {
     auto centre = centres.strand(g);
-    result.before[g] = groups_near(distal_index, points - half, centre.row(0).transpose(), g);
+    Eigen::Vector3f start = centre.row(0).transpose();
+    result.before[g] = groups_near(distal_index, points - half, start, g);
+    // Rooted on the scalp: only a group ending at g's start leads into it; one that
+    // merely passes over it (g lies under its lower half) does not.
+    if (!result.start_scalp_distance_m.empty() &&
+        result.start_scalp_distance_m[static_cast<size_t>(g)] < root_scalp_distance_m)
+      std::erase_if(result.before[g], [&](int32_t other) {
+        Eigen::Vector3f end = centres.strand(other).row(points - 1).transpose();
+        return (end - start).norm() > radius;
+      });
     result.after[g] = groups_near(proximal_index, half, centre.row(points - 1).transpose(), g);
     // Angle between g's distal direction (its last segment pointing on) and each
     // nearby group's proximal direction.

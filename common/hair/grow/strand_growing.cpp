@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -53,7 +54,8 @@ struct StrandEntry {
 /// Everything the growing of one strand looks up, built once.
 class GrowingContext {
  public:
-  GrowingContext(const GrowInput& input, const GrowParams& params)
+  /// With `any_type_roots`, roots take any input strand whatever the types say.
+  GrowingContext(const GrowInput& input, const GrowParams& params, bool any_type_roots)
       : input_(input), params_(params), h_(input.head_height_m) {
     const StrandSet& strands = input.input_strands;
     const auto& group = std::get<std::vector<int32_t>>(strands.strand_attributes.at("group"));
@@ -68,11 +70,11 @@ class GrowingContext {
     // lengths: root-type strands of clusters that start at the root; else any root-type
     // strand; else any strand.
     std::vector<int64_t> rows;
-    for (int64_t s = 0; s < strand_count; ++s)
+    for (int64_t s = 0; s < strand_count && !any_type_roots; ++s)
       if (carries_roots(s))
         for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
           rows.push_back(row);
-    if (rows.empty()) {
+    if (rows.empty() && !any_type_roots) {
       for (int64_t s = 0; s < strand_count; ++s)
         if (is_root_type(type_of_strand(s)))
           for (int64_t row = strands.offsets[s]; row < strands.offsets[s + 1]; ++row)
@@ -781,24 +783,14 @@ bool stands_off_the_scalp(const StrandSet& strands, int64_t row, const Vec3& nor
   return std::abs(segment.normalized().dot(normal)) > std::sqrt(0.5);
 }
 
-}  // namespace
-
-GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
-  const double h = input.head_height_m;
-  if (!(h > 0)) throw Error::bad_input(input.source, "head height is not positive");
-  if (input.input_strands.strand_count() == 0)
-    throw Error::bad_input(input.source, "no input strands to grow from");
-  if (input.scalp_triangle.size() != static_cast<size_t>(input.body_triangles.rows()))
-    throw Error::bad_input(input.source, "scalp flags do not match the body's triangles");
-  GrowingContext context(input, params);
-  GrowResult result;
-  result.roots_from_any_type = context.any_type_roots();
-  if (result.roots_from_any_type)
-    spdlog::warn("{}: no root-type strand group; roots take the cluster of the nearest strand",
-                 input.source);
-
-  // Roots: blue noise on the scalp covered by root-type strands.
+/// Scalp triangles (input.scalp_triangle) whose centre lies within scalp_cover_h of the
+/// input-strand point `nearest_row` gives for it (a row of input_strands.points); where
+/// that point's strand stands off the scalp, only within standing_cover_h of it along
+/// the scalp.
+std::vector<uint8_t> scalp_under_strands(const GrowInput& input, const GrowParams& params,
+                                         const std::function<int64_t(const Vec3&)>& nearest_row) {
   const StrandSet& strands = input.input_strands;
+  const double h = input.head_height_m;
   std::vector<uint8_t> covered(input.scalp_triangle.size(), 0);
   const double cover_m = params.scalp_cover_h * h;
   const double standing_cover_m = std::min(params.standing_cover_h, params.scalp_cover_h) * h;
@@ -808,7 +800,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     for (int k = 0; k < 3; ++k)
       corner[static_cast<size_t>(k)] = point_of(input.body_vertices, input.body_triangles(t, k));
     const Vec3 centre = (corner[0] + corner[1] + corner[2]) / 3;
-    const int64_t row = context.nearest_root_point(centre);
+    const int64_t row = nearest_row(centre);
     const Vec3 offset = point_of(strands.points, row) - centre;
     if (offset.norm() > cover_m) continue;
     const Vec3 normal = triangle_normal(input, t);
@@ -821,8 +813,67 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
       if (along_the_scalp_m(from_triangle, normal) > standing_cover_m) continue;
     }
     covered[static_cast<size_t>(t)] = 1;
-    ++result.scalp_triangles_used;
   }
+  return covered;
+}
+
+/// Area in m^2 of the body triangles flagged in `flags`.
+double flagged_area_m2(const GrowInput& input, const std::vector<uint8_t>& flags) {
+  double area_m2 = 0;
+  for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
+    if (!flags[static_cast<size_t>(t)]) continue;
+    const Vec3 a = point_of(input.body_vertices, input.body_triangles(t, 0));
+    const Vec3 b = point_of(input.body_vertices, input.body_triangles(t, 1));
+    const Vec3 c = point_of(input.body_vertices, input.body_triangles(t, 2));
+    area_m2 += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area_m2;
+}
+
+}  // namespace
+
+GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
+  const double h = input.head_height_m;
+  if (!(h > 0)) throw Error::bad_input(input.source, "head height is not positive");
+  if (input.input_strands.strand_count() == 0)
+    throw Error::bad_input(input.source, "no input strands to grow from");
+  if (input.scalp_triangle.size() != static_cast<size_t>(input.body_triangles.rows()))
+    throw Error::bad_input(input.source, "scalp flags do not match the body's triangles");
+  auto context_ptr = std::make_unique<GrowingContext>(input, params, false);
+  GrowResult result;
+  std::vector<uint8_t> covered = scalp_under_strands(
+      input, params, [&](const Vec3& point) { return context_ptr->nearest_root_point(point); });
+  result.typed_root_scalp_share = 1.0;
+  if (!context_ptr->any_type_roots() && params.min_typed_root_scalp_share > 0) {
+    // The scalp under the hair whatever its types: where root-type strands cover too
+    // little of it, the types do not say where the roots are.
+    PointIndex all_points(input.input_strands.points);
+    std::vector<uint8_t> covered_by_any =
+        scalp_under_strands(input, params, [&](const Vec3& point) {
+          return static_cast<int64_t>(all_points.nearest(point.cast<float>(), 1).front());
+        });
+    const double any_area_m2 = flagged_area_m2(input, covered_by_any);
+    if (any_area_m2 > 0)
+      result.typed_root_scalp_share = flagged_area_m2(input, covered) / any_area_m2;
+    if (result.typed_root_scalp_share < params.min_typed_root_scalp_share) {
+      spdlog::warn(
+          "{}: root-type strands cover {:.0f}% of the scalp under the hair (under {:.0f}%); "
+          "roots take the cluster of the nearest strand of any type",
+          input.source, 100 * result.typed_root_scalp_share,
+          100 * params.min_typed_root_scalp_share);
+      context_ptr = std::make_unique<GrowingContext>(input, params, true);
+      covered = std::move(covered_by_any);
+    }
+  } else if (context_ptr->any_type_roots()) {
+    result.typed_root_scalp_share = 0.0;
+    spdlog::warn("{}: no root-type strand group; roots take the cluster of the nearest strand",
+                 input.source);
+  }
+  const GrowingContext& context = *context_ptr;
+  result.roots_from_any_type = context.any_type_roots();
+  for (uint8_t flag : covered) result.scalp_triangles_used += flag;
+  const StrandSet& strands = input.input_strands;
+  const double standing_cover_m = std::min(params.standing_cover_h, params.scalp_cover_h) * h;
   // Within a covered triangle, a root beside a standing strand lies within
   // standing_cover_h of it along the scalp (the triangles are coarser than that).
   const SampleAcceptance standing_base_only = [&](const Vec3& root, int32_t t) {

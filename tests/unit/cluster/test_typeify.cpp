@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "hair/cluster/typeify.h"
+#include "hair/core/error.h"
 
 namespace hair {
 namespace {
@@ -74,6 +75,47 @@ TEST(GroupTypes, SharpTurnIsNotConnectedUnderASmallAngle) {
   EXPECT_EQ(types.type[1], GroupType::tip);
   EXPECT_FALSE(types.threshold_from_distribution);
   EXPECT_NEAR(types.after_angle_rad[0][0], std::numbers::pi / 2, 1e-3);
+}
+
+// A layered cut: card 0 hangs from the crown; card 1 starts on the scalp under card 0's
+// lower half and hangs on; card 2 continues card 0 from its end. With the distance of each
+// start to the scalp, card 1 is a root (card 0 passes over it, it does not end there) and
+// card 2 stays card 0's continuation although it starts on the scalp too. Without the
+// distances, or with the rule off (the default: the paper's rule as written), card 1 is
+// typed as following card 0.
+TEST(GroupTypes, ACardRootedUnderAnotherCardsLowerHalfIsARootWithTheScalp) {
+  Eigen::Vector3f down(0, -1, 0);
+  Model model =
+      model_of({straight({0, 1.70f, 0}, down, 0.12f), straight({0, 1.62f, -0.01f}, down, 0.15f),
+                straight({0, 1.575f, 0}, down, 0.10f)});
+  const int points = TypeifyParams{}.centre_points;
+  StrandSet centres = centre_strands(model.strands, model.first_strand, points);
+
+  GroupTypes plain = group_types(model.strands, model.first_strand, kHeadHeight, {});
+  EXPECT_EQ(plain.before[1], std::vector<int32_t>{0});
+  EXPECT_NE(plain.type[1], GroupType::root_connected);
+  EXPECT_NE(plain.type[1], GroupType::root_free);
+
+  // Every card starts 5 mm from the scalp (under 0.05 H = 12.5 mm).
+  const TypeifyParams rule_on{.root_scalp_distance_h = 0.05};
+  GroupTypes rooted =
+      group_types_from_centres(centres, {0.005, 0.005, 0.005}, kHeadHeight, rule_on);
+  EXPECT_TRUE(rooted.before[1].empty());
+  EXPECT_TRUE(rooted.type[1] == GroupType::root_free ||
+              rooted.type[1] == GroupType::root_connected);
+  EXPECT_EQ(rooted.before[2], std::vector<int32_t>{0});
+  EXPECT_EQ(rooted.type[2], GroupType::tip);
+  EXPECT_EQ(rooted.type[0], GroupType::root_connected);
+  EXPECT_EQ(rooted.start_scalp_distance_m.size(), 3u);
+
+  // Card 1 starting 5 cm off the scalp: a piece lying on card 0, its follower as before.
+  GroupTypes off = group_types_from_centres(centres, {0.005, 0.05, 0.005}, kHeadHeight, rule_on);
+  EXPECT_EQ(off.before[1], std::vector<int32_t>{0});
+  // And the rule off, as by default.
+  GroupTypes rule_off = group_types_from_centres(centres, {0.005, 0.005, 0.005}, kHeadHeight, {});
+  EXPECT_EQ(rule_off.before[1], std::vector<int32_t>{0});
+
+  EXPECT_THROW(group_types_from_centres(centres, {0.005}, kHeadHeight, rule_on), Error);
 }
 
 TEST(GroupTypes, CentreStrandIsTheMeanOfTheGroupsStrands) {

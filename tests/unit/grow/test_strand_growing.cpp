@@ -951,5 +951,37 @@ TEST(StrandGrowing, WithoutRootTypeGroupsRootsTakeAnyStrand) {
   EXPECT_GT(shortest_m, 0.08);
 }
 
+// Hair typed middle but for one card of four (tiny curl cards typed middle, a handful
+// root): the root-type strands cover about a quarter of the scalp under the hair. Above
+// min_typed_root_scalp_share the types place the roots, under it roots take any strand.
+TEST(StrandGrowing, RootsTakeAnyStrandWhereRootTypeStrandsCoverLittleOfTheScalp) {
+  Scene scene = make_scene();
+  GrowResult typed = grow_strands(scene.input, params_with(200));
+  EXPECT_FALSE(typed.roots_from_any_type);
+  EXPECT_NEAR(typed.typed_root_scalp_share, 1.0, 1e-9);
+
+  scene.input.group_type = {GroupType::middle,    GroupType::middle, GroupType::middle,
+                            GroupType::root_free, GroupType::middle, GroupType::tip};
+  GrowParams params = params_with(200);
+  params.min_typed_root_scalp_share = 0.1;
+  GrowResult one_card = grow_strands(scene.input, params);
+  EXPECT_FALSE(one_card.roots_from_any_type);
+  EXPECT_GT(one_card.typed_root_scalp_share, 0.15);
+  EXPECT_LT(one_card.typed_root_scalp_share, 0.4);
+  // Every root under card 3 (its cluster, 2).
+  const auto& cluster = int_attribute(one_card.strands, "cluster");
+  for (int32_t c : cluster) EXPECT_EQ(c, 2);
+
+  params.min_typed_root_scalp_share = 0.5;
+  GrowResult any = grow_strands(scene.input, params);
+  EXPECT_TRUE(any.roots_from_any_type);
+  EXPECT_NEAR(any.typed_root_scalp_share, one_card.typed_root_scalp_share, 1e-12);
+  // Roots under every card: clusters 0 and 2 both carry roots.
+  const auto& any_cluster = int_attribute(any.strands, "cluster");
+  EXPECT_GT(std::count(any_cluster.begin(), any_cluster.end(), 0), 50);
+  EXPECT_GT(std::count(any_cluster.begin(), any_cluster.end(), 2), 20);
+  EXPECT_GT(any.scalp_triangles_used, 2 * one_card.scalp_triangles_used);
+}
+
 }  // namespace
 }  // namespace hair

@@ -181,8 +181,7 @@ TEST(SynthClustering, AdjustedRandIndexPerPreset) {
     for (uint32_t seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
       SynthModel model = generate_model(varied_spec(preset(name), seed), body, seed, 2);
       ExtractResult extract = extract_strands(model.mesh, body, ExtractParams{}, name, "body");
-      GroupTypes found = group_types(extract.strands, extract.group_first_strand,
-                                     extract.head.head_height, TypeifyParams{});
+      GroupTypes found = testing::typeify_in_memory(extract);
       ClusteringScores with_found = score(model, extract, found.type, found.centre_strands);
       std::vector<int32_t> patch_of = group_patches(model, extract);
       std::vector<hair::GroupType> truth = found.type;
