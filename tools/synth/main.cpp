@@ -205,7 +205,10 @@ int main(int argc, char** argv) {
     if (list_presets) {
       for (const std::string& p : hair::synth::preset_names()) std::cout << p << "\n";
       for (const std::string& p : hair::synth::painted_preset_names())
-        std::cout << p << " (painted; in the corpus with corpus --painted)\n";
+        std::cout << p
+                  << (hair::synth::in_training_corpus(p)
+                          ? " (painted; in the corpus with corpus --painted)\n"
+                          : " (painted; not in the corpus)\n");
       return 0;
     }
     if (*corpus) {

@@ -145,8 +145,13 @@ const std::vector<std::string>& preset_names();
 /// back under a band low at the nape into a tail), "face_locks" (medium hair with two
 /// longer locks framing the face), "bun" (hair pulled up from the whole hairline to a
 /// band high on the back of the crown and coiled round it), "ringlets" (a one-piece cap
-/// over the top of the head with corkscrew ringlet tubes hanging from under its edge).
+/// over the top of the head with corkscrew ringlet tubes hanging from under its edge), "bob"
+/// (a few wide one-piece cards cut level at the jaw, as bob01 and bob02).
 const std::vector<std::string>& painted_preset_names();
+
+/// Whether corpus_plan() puts the preset `name` in the training corpus: every preset but
+/// "bob", whose clusters come out shorter than a real bob's (docs/synth.md).
+bool in_training_corpus(const std::string& name);
 
 /// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.
 HairStyleSpec preset(const std::string& name);

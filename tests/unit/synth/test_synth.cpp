@@ -228,6 +228,10 @@ TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamili
   EXPECT_EQ(painted[11].preset, "ring_cap");  // after the eleven presets
   EXPECT_EQ(painted[17].preset, "ringlets");
   EXPECT_EQ(painted[18].preset, "long_straight");
+  // The bob is a painted preset but stays out of the corpus (in_training_corpus()).
+  for (const CorpusEntry& entry : painted) EXPECT_NE(entry.preset, "bob");
+  EXPECT_FALSE(in_training_corpus("bob"));
+  EXPECT_TRUE(in_training_corpus("ringlets"));
   int swept_back = 0, waist_long = 0, braids = 0, caps = 0, loose = 0, gathered = 0;
   for (size_t i = 0; i < painted.size(); ++i) {
     const CorpusEntry& entry = painted[i];
