@@ -3,10 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
 #include "hair/core/error.h"
+#include "hair/style/feature_standardization.h"
 #include "hair/style/hair_style.h"
 #include "hair/style/style_held_out_prediction.h"
 
@@ -112,6 +115,8 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
       (model_of_row[i] == result.models[m] ? test : train).push_back(static_cast<Eigen::Index>(i));
     HeldOutPrediction prediction = held_out_prediction(features, labels, train, test, params,
                                                        params.seed + 1 + static_cast<uint64_t>(m));
+    std::vector<double> distance =
+        nearest_row_distances(features(train, Eigen::all), features(test, Eigen::all));
     for (size_t i = 0; i < test.size(); ++i) {
       auto row = static_cast<size_t>(test[i]);
       bool ruled = !decided.empty() && decided[row] >= 0;
@@ -121,6 +126,7 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
       result.forest.push_back(ruled ? decided[row] : prediction.forest[i]);
       result.weight.push_back(weight[row]);
       result.ruled.push_back(ruled ? 1 : 0);
+      result.nearest_training_distance.push_back(distance[i]);
     }
     result.model_rows.push_back(static_cast<int>(test.size()));
     result.svm_choice.push_back(prediction.svm_choice);
@@ -129,6 +135,22 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
   result.forest_scores =
       weighted_style_scores(result.truth, result.forest, result.weight, class_labels);
   return result;
+}
+
+std::vector<double> nearest_row_distances(const Eigen::MatrixXd& training,
+                                          const Eigen::MatrixXd& queries) {
+  if (training.rows() == 0 || training.cols() != queries.cols())
+    throw Error::usage("nearest row distances: " + std::to_string(training.rows()) + " x " +
+                       std::to_string(training.cols()) + " training rows, " +
+                       std::to_string(queries.cols()) + " query columns");
+  FeatureStandardization standardization = feature_standardization(training);
+  FloatRows train = standardized_rows(standardization, training);
+  FloatRows query = standardized_rows(standardization, queries);
+  std::vector<double> distance(static_cast<size_t>(queries.rows()));
+  for (Eigen::Index q = 0; q < query.rows(); ++q)
+    distance[static_cast<size_t>(q)] = std::sqrt(
+        static_cast<double>((train.rowwise() - query.row(q)).rowwise().squaredNorm().minCoeff()));
+  return distance;
 }
 
 std::string model_holdout_markdown(const ModelHoldout& holdout,
@@ -169,8 +191,37 @@ std::string model_holdout_markdown(const ModelHoldout& holdout,
   append_weighted_confusion(text, "SVM confusion", holdout.svm_scores);
   append_weighted_confusion(text, "Random forest confusion", holdout.forest_scores);
 
+  // Accuracy by how far the held-out clusters lie from the training rows.
+  if (holdout.nearest_training_distance.size() == holdout.truth.size()) {
+    text +=
+        "By distance to the nearest training cluster (standardised features; the classifiers "
+        "learnt nothing near a far cluster)\n\n| distance | clusters | strands | SVM strands "
+        "right | forest strands right |\n|---|---:|---:|---:|---:|\n";
+    const std::array<double, 5> bounds = {0.0, 1.0, 2.0, 3.0, 1e300};
+    for (size_t b = 0; b + 1 < bounds.size(); ++b) {
+      double strands = 0, svm_right = 0, forest_right = 0;
+      int clusters = 0;
+      for (size_t r = 0; r < holdout.truth.size(); ++r) {
+        double d = holdout.nearest_training_distance[r];
+        if (d < bounds[b] || d >= bounds[b + 1]) continue;
+        double w = holdout.weight[r];
+        ++clusters;
+        strands += w;
+        svm_right += holdout.svm[r] == holdout.truth[r] ? w : 0;
+        forest_right += holdout.forest[r] == holdout.truth[r] ? w : 0;
+      }
+      std::string range = b + 2 < bounds.size()
+                              ? fmt::format("{:.0f}-{:.0f}", bounds[b], bounds[b + 1])
+                              : fmt::format("{:.0f} or more", bounds[b]);
+      text += fmt::format("| {} | {} | {:.0f} | {} | {} |\n", range, clusters, strands,
+                          percent(svm_right, strands), percent(forest_right, strands));
+    }
+    text += "\n";
+  }
+
   text +=
-      "Per held-out model: each cluster as `id truth → forest / SVM (strands)`\n\n"
+      "Per held-out model: each cluster as `id truth → forest / SVM (strands, distance to the "
+      "nearest training cluster)`\n\n"
       "| model | strands right (forest) | strands right (SVM) | clusters |\n|---|---:|---:|---|\n";
   size_t row = 0;
   for (size_t m = 0; m < holdout.models.size(); ++m) {
@@ -183,13 +234,17 @@ std::string model_holdout_markdown(const ModelHoldout& holdout,
       svm_right += holdout.svm[row] == holdout.truth[row] ? w : 0;
       if (!clusters.empty()) clusters += ", ";
       int32_t cluster = cluster_of_row[static_cast<size_t>(holdout.rows[row])];
-      clusters += holdout.ruled[row] ? fmt::format("{} {} → {} by rule ({:.0f})", cluster,
-                                                   hair_style_label_text(holdout.truth[row]),
-                                                   hair_style_label_text(holdout.svm[row]), w)
-                                     : fmt::format("{} {} → {} / {} ({:.0f})", cluster,
-                                                   hair_style_label_text(holdout.truth[row]),
-                                                   hair_style_label_text(holdout.forest[row]),
-                                                   hair_style_label_text(holdout.svm[row]), w);
+      std::string distance = row < holdout.nearest_training_distance.size()
+                                 ? fmt::format(", d {:.1f}", holdout.nearest_training_distance[row])
+                                 : "";
+      clusters += holdout.ruled[row]
+                      ? fmt::format("{} {} → {} by rule ({:.0f}{})", cluster,
+                                    hair_style_label_text(holdout.truth[row]),
+                                    hair_style_label_text(holdout.svm[row]), w, distance)
+                      : fmt::format("{} {} → {} / {} ({:.0f}{})", cluster,
+                                    hair_style_label_text(holdout.truth[row]),
+                                    hair_style_label_text(holdout.forest[row]),
+                                    hair_style_label_text(holdout.svm[row]), w, distance);
     }
     // A model is named by its folder; its last part says which.
     std::string name = std::filesystem::path(holdout.models[m]).filename().string();

@@ -45,6 +45,10 @@ struct ModelHoldout {
   std::vector<int32_t> forest;              ///< per held-out row, the random forest's
   std::vector<double> weight;               ///< per held-out row
   std::vector<uint8_t> ruled;               ///< per held-out row, 1 where `decided` gave its style
+  /// Per held-out row: the Euclidean distance to the nearest training row of its fold, in
+  /// features standardised on those training rows (standard deviations): how far the
+  /// cluster lies from anything the classifiers learnt from.
+  std::vector<double> nearest_training_distance;
   std::vector<PukSvmSelection> svm_choice;  ///< per held-out model
   WeightedStyleScores svm_scores, forest_scores;  ///< over the held-out rows
 };
@@ -69,9 +73,15 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
                                  const StyleClassifierParams& params,
                                  std::span<const int32_t> decided = {});
 
+/// Per row of `queries` (m x d), the Euclidean distance to the nearest row of `training`
+/// (n x d, n >= 1), both standardised on `training` (feature_standardization()).
+std::vector<double> nearest_row_distances(const Eigen::MatrixXd& training,
+                                          const Eigen::MatrixXd& queries);
+
 /// The evaluation as Markdown: accuracy weighted by strands and by clusters, per-class
-/// recall and precision (strands), the confusion in strands, and per model what each
-/// cluster was given (marked "rule" where the criteria decided). `cluster_of_row` (n)
+/// recall and precision (strands), the confusion in strands, the accuracy by distance to
+/// the nearest training row, and per model what each cluster was given (marked "rule"
+/// where the criteria decided) and how far it lies from the training rows. `cluster_of_row` (n)
 /// names the clusters in the per-model table.
 std::string model_holdout_markdown(const ModelHoldout& holdout,
                                    std::span<const int32_t> cluster_of_row);

@@ -122,7 +122,30 @@ TEST(LeaveOneModelOut, AHeldOutModelNeverTrainsItsOwnClassifiers) {
   EXPECT_TRUE(contains(markdown, "3 models held out in turn, 24 clusters, 15300 strands"));
   EXPECT_TRUE(contains(markdown, "| random forest | 21.6% | 50.0% (12 / 24) |")) << markdown;
   EXPECT_TRUE(contains(markdown, "| real_contrary | 0.0% | 0.0% |"));
-  EXPECT_TRUE(contains(markdown, "fixed → normal / normal (1000)"));
+  // The contrary rows repeat synthetic rows: they lie on the training data (distance 0).
+  EXPECT_TRUE(contains(markdown, "fixed → normal / normal (1000, d 0.0)")) << markdown;
+  ASSERT_EQ(holdout.nearest_training_distance.size(), 24u);
+  for (size_t r = 0; r < 24; ++r) {
+    if (corpus.model[static_cast<size_t>(holdout.rows[r])] == "real_contrary") {
+      EXPECT_DOUBLE_EQ(holdout.nearest_training_distance[r], 0.0);
+    }
+  }
+  EXPECT_TRUE(contains(markdown, "By distance to the nearest training cluster"));
+}
+
+TEST(NearestRowDistances, InStandardDeviationsOfTheTrainingRows) {
+  // Training: x in {0, 2} (mean 1, deviation 1), y constant (scale 1). A query at x = 5
+  // lies 3 standard deviations from the row at 2; one at the row at 0, 0.
+  Eigen::MatrixXd training(2, 2), queries(3, 2);
+  training << 0, 7, 2, 7;
+  queries << 5, 7, 0, 7, 2, 9;
+  std::vector<double> distance = nearest_row_distances(training, queries);
+  ASSERT_EQ(distance.size(), 3u);
+  EXPECT_NEAR(distance[0], 3.0, 1e-6);
+  EXPECT_NEAR(distance[1], 0.0, 1e-6);
+  EXPECT_NEAR(distance[2], 2.0, 1e-6);  // a constant column keeps scale 1
+  EXPECT_THROW(nearest_row_distances(Eigen::MatrixXd(0, 2), queries), Error);
+  EXPECT_THROW(nearest_row_distances(training, Eigen::MatrixXd(1, 3)), Error);
 }
 
 TEST(LeaveOneModelOut, DecidedStylesTakeThePlaceOfBothClassifiers) {
@@ -142,7 +165,8 @@ TEST(LeaveOneModelOut, DecidedStylesTakeThePlaceOfBothClassifiers) {
   }
   EXPECT_GE(holdout.forest_scores.confusion(1, 1), 12000);  // and the true fixed ones
   std::vector<int32_t> cluster(corpus.model.size(), 3);
-  EXPECT_TRUE(contains(model_holdout_markdown(holdout, cluster), "3 fixed → fixed by rule (1000)"));
+  EXPECT_TRUE(
+      contains(model_holdout_markdown(holdout, cluster), "3 fixed → fixed by rule (1000, d 0.0)"));
   std::vector<int32_t> too_few(3, -1);
   EXPECT_THROW(leave_one_model_out(corpus.data.features, corpus.data.labels, corpus.model,
                                    corpus.real, corpus.strands, quick_params(), too_few),
