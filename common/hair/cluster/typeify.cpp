@@ -88,6 +88,10 @@ GroupTypes group_types_from_centres(StrandSet centres_in,
     throw Error::bad_input("", "scalp distances (" + std::to_string(start_scalp_distance_m.size()) +
                                    ") do not match the groups (" + std::to_string(group_count) +
                                    ")");
+  if (centres_in.point_count() != group_count * params.centre_points)
+    throw Error::bad_input("", "centre strands of " + std::to_string(params.centre_points) +
+                                   " points expected (" + std::to_string(centres_in.point_count()) +
+                                   " points for " + std::to_string(group_count) + " groups)");
   GroupTypes result;
   result.centre_strands = std::move(centres_in);
   result.start_scalp_distance_m = std::move(start_scalp_distance_m);

@@ -116,6 +116,10 @@ TEST(GroupTypes, ACardRootedUnderAnotherCardsLowerHalfIsARootWithTheScalp) {
   EXPECT_EQ(rule_off.before[1], std::vector<int32_t>{0});
 
   EXPECT_THROW(group_types_from_centres(centres, {0.005}, kHeadHeight, rule_on), Error);
+  TypeifyParams other_count = rule_on;
+  other_count.centre_points = points + 1;  // centres of another resolution
+  EXPECT_THROW(group_types_from_centres(centres, {0.005, 0.005, 0.005}, kHeadHeight, other_count),
+               Error);
 }
 
 TEST(GroupTypes, CentreStrandIsTheMeanOfTheGroupsStrands) {
