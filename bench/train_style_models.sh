@@ -4,13 +4,14 @@
 # ten of each of the 18 presets) and the ten MakeHuman meshes go through Makefile.pipeline
 # up to strands.h5, then hair-train-style writes the feature tables, the leave-one-model-out
 # report on the real meshes (the headline), the cross-validation reports (folds of
-# clusters and folds of models) and models/style_{paper,extended}.yml (docs/classify.md).
+# clusters, the paper's and our features' also repeated with ten draws of folds, and
+# folds of models) and models/style_{paper,extended}.yml (docs/classify.md).
 #
 #   bash bench/train_style_models.sh [WORK_DIR]
 #
 # WORK_DIR (default: a new folder under $TMPDIR) keeps the pipeline outputs, so a rerun
 # after a change reruns only what make finds out of date. Environment: JOBS (make -j,
-# default 2), MODELS (where the model files go, default models), REPORTS (where the two
+# default 2), MODELS (where the model files go, default models), REPORTS (where the
 # reports go, default docs/measured), MAKEHUMAN (default ../shared/data/makehuman).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -60,4 +61,6 @@ build/bin/hair-train-style --tables-in "$work/tables" \
   --holdout-report "$reports/classify_real_holdout.md"
 build/bin/hair-train-style --tables-in "$work/tables" --fold-by model \
   --report "$reports/classify_cv_by_model.md"
+build/bin/hair-train-style --tables-in "$work/tables" --feature-sets paper,extended \
+  --repeats 10 --report "$reports/classify_cv_repeated.md"
 echo "train_style_models: training $(($(date +%s) - start)) s"

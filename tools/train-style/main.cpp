@@ -20,6 +20,7 @@
 #include "hair/h5/schema_validation.h"
 #include "hair/style/decisive_style_rules.h"
 #include "hair/style/hair_style.h"
+#include "hair/style/repeated_cross_validation.h"
 #include "hair/style/stratified_folds.h"
 #include "hair/style/style_classifier.h"
 #include "hair/style/style_cross_validation.h"
@@ -209,6 +210,13 @@ int main(int argc, char** argv) {
   app.add_option("--folds", params.folds, "folds of the cross-validation")
       ->check(CLI::Range(2, 100));
   app.add_option("--seed", params.seed, "seed of the fold assignment");
+  int repeats = 1;
+  app.add_option("--repeats", repeats,
+                 "--report: repeat the cross-validation with the fold seeds SEED, SEED + 1, ...; "
+                 "the report gives the mean accuracy, its spread and every repeat's, then the "
+                 "first repeat in full")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   std::string fold_by = "cluster";
   app.add_option("--fold-by", fold_by,
                  "cluster: stratified folds of clusters (the paper's cross-validation); model: "
@@ -269,8 +277,11 @@ int main(int argc, char** argv) {
         {"raw", "Raw features"}};
     if (!report_path.empty()) {
       std::vector<bool> real(first.real_mesh.begin(), first.real_mesh.end());
-      std::vector<int32_t> folds;
-      if (fold_by == "model") folds = hair::grouped_folds(first.model, params.folds, params.seed);
+      hair::FoldsForSeed folds_for_seed;
+      if (fold_by == "model")
+        folds_for_seed = [&first, &params](uint64_t seed) {
+          return hair::grouped_folds(first.model, params.folds, seed);
+        };
       std::string command = "hair-train-style";
       for (int a = 1; a < argc; ++a) command += std::string(" ") + argv[a];
       std::string report = "# Style classifiers: cross-validation\n\nWritten by `" + command +
@@ -281,18 +292,33 @@ int main(int argc, char** argv) {
       for (const std::string& set : report_sets) {
         const hair::StyleTable& table = tables.at(set);
         auto cv_start = std::chrono::steady_clock::now();
-        hair::StyleCrossValidation cv =
-            hair::style_cross_validation(table.rows, int_labels(table), real, params, folds);
+        hair::RepeatedCrossValidation repeated = hair::repeated_style_cross_validation(
+            table.rows, int_labels(table), real, params, repeats, folds_for_seed);
+        const hair::StyleCrossValidation& cv = repeated.repeats.front();
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - cv_start).count();
-        report +=
-            "\n## " + titles.at(set) + " (" + std::to_string(table.rows.cols()) +
-            " dimensions)\n\n" + hair::style_cross_validation_markdown(cv, "real meshes") + "\n" +
-            fmt::format("Cross-validation of both classifiers, grid search included: {:.1f} s.\n",
-                        seconds);
+        report += "\n## " + titles.at(set) + " (" + std::to_string(table.rows.cols()) +
+                  " dimensions)\n\n";
+        if (repeats > 1)
+          report += hair::repeated_cross_validation_markdown(repeated, "real meshes") +
+                    fmt::format("\nThe first of them (seed {}):\n\n", repeated.seeds.front());
+        report += hair::style_cross_validation_markdown(cv, "real meshes") + "\n" +
+                  fmt::format(
+                      "Cross-validation{} of both classifiers, grid search included: "
+                      "{:.1f} s.\n",
+                      repeats > 1 ? "s" : "", seconds);
+        std::vector<double> svm_accuracies, forest_accuracies;
+        for (const hair::StyleCrossValidation& each : repeated.repeats) {
+          svm_accuracies.push_back(each.svm.accuracy());
+          forest_accuracies.push_back(each.forest.accuracy());
+        }
+        const hair::AccuracySpread svm = hair::accuracy_spread(svm_accuracies);
+        const hair::AccuracySpread forest = hair::accuracy_spread(forest_accuracies);
         spdlog::info(
-            "{} features: SVM {:.1f}%, random forest {:.1f}% (real meshes {:.1f}%, {:.1f}%)", set,
-            100 * cv.svm.accuracy(), 100 * cv.forest.accuracy(), 100 * cv.svm.subset_accuracy(),
+            "{} features: SVM {:.1f}% (sd {:.1f} over {} repeats), random forest {:.1f}% (sd "
+            "{:.1f}); first repeat's real meshes {:.1f}%, {:.1f}%",
+            set, 100 * svm.mean, 100 * svm.standard_deviation, repeats, 100 * forest.mean,
+            100 * forest.standard_deviation, 100 * cv.svm.subset_accuracy(),
             100 * cv.forest.subset_accuracy());
       }
       write_text(report_path, report);
