@@ -108,6 +108,7 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["bun_radius_m"] = c.bun_radius_m;
     item["ringlet_radius_m"] = c.ringlet_radius_m;
     item["ringlet_pitch_m"] = c.ringlet_pitch_m;
+    item["hang_volume_m"] = c.hang_volume_m;
     item["tube_sides"] = c.tube_sides;
     item["cap_volume_m"] = c.cap_volume_m;
     item["cap_drape"] = c.cap_drape;
@@ -189,7 +190,8 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
                                        "band_polar_deg", "braid_width_m",    "braid_depth_m",
                                        "braid_period_m", "band_gap_m",       "one_piece_rings",
                                        "bun_radius_m",   "ringlet_radius_m", "ringlet_pitch_m",
-                                       "tube_sides",     "cap_volume_m",     "cap_drape"});
+                                       "tube_sides",     "cap_volume_m",     "cap_drape",
+                                       "hang_volume_m"});
       ComponentSpec c;
       std::string kind = "normal";
       read_key(item, where, "kind", kind);
@@ -228,6 +230,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
       read_key(item, where, "ringlet_pitch_m", c.ringlet_pitch_m);
       read_key(item, where, "tube_sides", c.tube_sides);
       read_key(item, where, "cap_volume_m", c.cap_volume_m);
+      read_key(item, where, "hang_volume_m", c.hang_volume_m);
       read_key(item, where, "cap_drape", c.cap_drape);
       spec.components.push_back(c);
     }
@@ -291,6 +294,7 @@ void check_spec(const HairStyleSpec& spec) {
     require_range(where + "ringlet_radius_m", c.ringlet_radius_m, 0, 0.05);
     require_range(where + "ringlet_pitch_m", c.ringlet_pitch_m, 0.005, 0.5);
     require_range(where + "cap_volume_m", c.cap_volume_m, 0, 0.1);
+    require_range(where + "hang_volume_m", c.hang_volume_m, 0, 0.1);
     if (c.tube_sides != 0) require_range(where + "tube_sides", c.tube_sides, 3, 32);
   }
   const DefectSpec& d = spec.defects;

@@ -271,6 +271,29 @@ void round_creases(const Head& head, std::vector<Vec3>& curve, double min_radius
   }
 }
 
+/// Lifts a hanging curve away from the head's vertical axis by up to `volume_m`: nothing at
+/// the root, rising as a smoothstep over the first 40% of its length, falling back as one
+/// over the last 25% (the tips turn in), as a bob's cards stand off the head below the
+/// crown; kept `clearance_m` off the body.
+void stand_off(const Head& head, std::vector<Vec3>& curve, double volume_m, double clearance_m) {
+  std::vector<double> along(curve.size(), 0.0);
+  for (size_t i = 1; i < curve.size(); ++i)
+    along[i] = along[i - 1] + (curve[i] - curve[i - 1]).norm();
+  if (curve.size() < 2 || along.back() <= 0) return;
+  for (size_t i = 1; i < curve.size(); ++i) {
+    auto smoothstep = [](double t) {
+      t = std::clamp(t, 0.0, 1.0);
+      return t * t * (3 - 2 * t);
+    };
+    double lift = volume_m * smoothstep(along[i] / (0.4 * along.back())) *
+                  smoothstep((along.back() - along[i]) / (0.25 * along.back()));
+    Vec3 outward = curve[i] - head.centre;
+    outward.y() = 0;
+    if (outward.norm() < 1e-9) continue;
+    curve[i] = head.pushed_out(curve[i] + lift * outward.normalized(), clearance_m);
+  }
+}
+
 /// Adds waves across the strip (amplitude fading in over the first 3 cm).
 void add_waves(Stream& stream, double amplitude_m, double wavelength_m, double phase) {
   if (amplitude_m <= 0) return;
@@ -393,6 +416,8 @@ void add_loose_streams(const ComponentSpec& component, int component_index,
     stream.style = is_short ? HairStyle::short_hair : HairStyle::normal;
     stream.points = grown_curve(head, root, start, length, is_short ? 0.15 : 0.06,
                                 defects.body_clearance_m, !is_short);
+    if (!is_short && component.hang_volume_m > 0)
+      stand_off(head, stream.points, component.hang_volume_m, defects.body_clearance_m);
     measure_arc_length(stream);
     frame_stream(stream, head);
     add_waves(stream, component.wave_amplitude_m, component.wavelength_m, rng.uniform(0, 2 * kPi));
@@ -1186,6 +1211,7 @@ HairStyleSpec painted_preset(const std::string& name) {
     normal.stream_count = 12;
     normal.strip_width_m = 0.06;
     normal.polar_max_deg = 45;  // roots round the crown: the cards cover the head
+    normal.hang_volume_m = 0.012;  // standing off the head below the crown, as bob01's and bob02's
     // Parted in the middle: no card roots over the face (it would hang over it).
     ComponentSpec left = normal, right = normal;
     left.azimuth_min_deg = 45;

@@ -85,6 +85,11 @@ struct ComponentSpec {
   /// swept off the face, before they turn back to the band.
   double cap_volume_m = 0.0;
   bool cap_drape = false;
+  /// Normal hair: above 0, each stream stands off the head by up to this much below its
+  /// root, rising smoothly over the first 40% of its length and turning back in over the
+  /// last 25%, as a bob's cards do (bob01 and bob02's rails lie 1-1.5 cm farther off the body from
+  /// the middle of their length on than hair-synth's hugging cards).
+  double hang_volume_m = 0.0;
   /// Above 0: each piece is meshed as a closed tube of this many sides round the stream's
   /// centre (its diameter the strip width), as artists model ringlets, not a flat strip.
   int tube_sides = 0;

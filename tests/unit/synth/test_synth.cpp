@@ -431,6 +431,11 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   EXPECT_TRUE(spec_from_json(json).components[0].cap_drape);
   json["components"][0]["cap_volume_m"] = 0.2;
   EXPECT_THROW(spec_from_json(json), hair::Error);
+  // A bob's volume round-trips and stays within 10 cm.
+  json = spec_json(preset("bob"));
+  EXPECT_EQ(json["components"][0]["hang_volume_m"], 0.012);
+  json["components"][0]["hang_volume_m"] = 0.15;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
   // Tucked tips: a share, a length of at least 2 mm, a depth of at most 5 cm.
   json = spec_json(preset("short_cap"));
   EXPECT_EQ(json["defects"]["tucked_share"], 0.0);
@@ -569,6 +574,52 @@ TEST(SynthPresets, ALooseLowTailsCapStandsOffTheHeadAndFallsOverTheEars) {
   EXPECT_LT(loose_cap.farthest_off_body_m, 0.06);
   EXPECT_LT(close_cap.front_over_the_ears, 0.2);
   EXPECT_GT(loose_cap.front_over_the_ears, 0.8);
+}
+
+/// Per stream of `model`, the body distance of its centre at `share` of its arc length;
+/// the median over the streams.
+double median_stream_distance(const SynthModel& model, const TriangleMeshDistance& body,
+                              double share) {
+  std::vector<double> distances;
+  const StrandSet& centres = model.stream_centres;
+  for (int64_t s = 0; s < centres.strand_count(); ++s) {
+    const int64_t first = centres.offsets[s], end = centres.offsets[s + 1];
+    std::vector<double> along{0.0};
+    for (int64_t p = first + 1; p < end; ++p)
+      along.push_back(along.back() +
+                      (centres.points.row(p) - centres.points.row(p - 1)).cast<double>().norm());
+    const double target = share * along.back();
+    int64_t p = first;
+    while (p + 1 < end && along[static_cast<size_t>(p + 1 - first)] < target) ++p;
+    distances.push_back(body.distance(centres.points.row(p).cast<double>().transpose()));
+  }
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  return distances[distances.size() / 2];
+}
+
+TEST(SynthPresets, ABobsCardsStandOffTheHeadBelowTheCrownAndTurnInAtTheTips) {
+  // bob01's and bob02's rails lie 1-1.5 cm farther off the body from the middle of their
+  // length on than cards hugging the head; the bob preset lifts its cards by up to
+  // hang_volume_m = 1.2 cm (nothing at the root, back in at the tips).
+  Triangles3i triangles = fan_triangulation(body_m().face_offsets, body_m().face_vertices);
+  TriangleMeshDistance body(body_m().vertices, triangles);
+  HairStyleSpec bob = preset("bob"), hugging = bob;
+  EXPECT_DOUBLE_EQ(bob.components[0].hang_volume_m, 0.012);
+  for (ComponentSpec& component : hugging.components) component.hang_volume_m = 0;
+  const SynthModel standing = generate_model(bob, body_m(), 1);
+  const SynthModel flat = generate_model(hugging, body_m(), 1);
+  const double root_lift_m =
+      median_stream_distance(standing, body, 0.0) - median_stream_distance(flat, body, 0.0);
+  const double middle_lift_m =
+      median_stream_distance(standing, body, 0.5) - median_stream_distance(flat, body, 0.5);
+  const double tip_lift_m =
+      median_stream_distance(standing, body, 1.0) - median_stream_distance(flat, body, 1.0);
+  std::printf("[ synth    ] bob: lifted %.4f m at the root, %.4f m halfway, %.4f m at the tip\n",
+              root_lift_m, middle_lift_m, tip_lift_m);
+  EXPECT_NEAR(root_lift_m, 0.0, 1e-6);
+  EXPECT_GT(middle_lift_m, 0.008);
+  EXPECT_LT(middle_lift_m, 0.0125);
+  EXPECT_LT(tip_lift_m, 0.5 * middle_lift_m);
 }
 
 }  // namespace

@@ -417,10 +417,15 @@ TEST(SynthGrow, PaintedPresetsAgainstTheirTruth) {
       // (0.80 over its seeds: the same convergence at its band, and its coil), and the ringlets by
       // far (0.57-0.65: the grown strands run down the tubes' axis, not round their
       // corkscrew, 8 mm in radius); the others meet it. Floors under the figures of
-      // 2026-11-26.
+      // 2026-11-26. The bob (ours, not the issue's) grew 88.0% along its truth with its
+      // cards hugging the head, 84.3-86.0% since they stand off it below the crown
+      // (hang_volume_m, 2026-11-27): rooted on the scalp under a card that stands off it,
+      // a strand rises to the card first (seed 1: the first tenth of the grown strands
+      // runs along the truth 57% of the time, the rest 86-94%).
       const double along_floor = name == "low_tail"   ? 0.7
                                  : name == "bun"      ? 0.74
                                  : name == "ringlets" ? 0.52
+                                 : name == "bob"      ? 0.82
                                                       : 0.85;
       EXPECT_GE(scores.along_truth, along_floor);
       EXPECT_LT(scores.worst_layer_coverage, 0.03);  // every true layer reached
