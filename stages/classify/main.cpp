@@ -62,6 +62,15 @@ int main(int argc, char** argv) {
                    "fixed rule: at most this share of the strands end in the cluster (the "
                    "others go on past the band)",
                    share);
+  app.params().add("ungathered_root_share", rules.ungathered_root_share,
+                   "not fixed: at least this share of the strands start at roots, ...", share);
+  app.params().add("ungathered_tip_share", rules.ungathered_tip_share,
+                   "not fixed: ... at least this share of them end in the cluster, ...", share);
+  app.params().add("ungathered_gathering_ratio", rules.ungathered_gathering_ratio,
+                   "not fixed: ... and their ends at least this spread (equation 6's ratio): "
+                   "gathered into nothing, they are not fixed, and the classifier's best other "
+                   "style is taken",
+                   share);
   double unsure_below = hair::kDefaultUnsureBelow;
   app.params().add("unsure_below", unsure_below,
                    "a cluster whose classifier is less sure of its style is unsure (styles.h5, the "
@@ -114,6 +123,20 @@ int main(int argc, char** argv) {
                         hair::hair_style_name(static_cast<hair::HairStyle>(styles.style[c])));
     if (!ruled_list.empty())
       spdlog::info("{}: decided by the paper's criteria: {}", strands_path, ruled_list);
+    std::string not_fixed_list;
+    for (size_t c = 0; c < styles.fixed_ruled_out.size(); ++c) {
+      const int8_t said = classifier == "svm" ? styles.svm_style[c] : styles.forest_style[c];
+      if (styles.fixed_ruled_out[c] && !styles.pinned[c] && !styles.ruled[c] &&
+          said == static_cast<int8_t>(hair::HairStyle::fixed))
+        not_fixed_list +=
+            fmt::format("{}{} {}", not_fixed_list.empty() ? "" : ", ", c,
+                        hair::hair_style_name(static_cast<hair::HairStyle>(styles.style[c])));
+    }
+    if (!not_fixed_list.empty())
+      spdlog::info(
+          "{}: the {} said fixed, but the strands start at the roots and end in the "
+          "cluster without gathering; its best other style: {}",
+          strands_path, classifier == "svm" ? "SVM" : "random forest", not_fixed_list);
     const std::vector<uint8_t> unsure = hair::unsure_clusters(styles, unsure_below);
     std::string unsure_list;
     for (size_t c = 0; c < unsure.size(); ++c)

@@ -85,7 +85,7 @@ std::multiset<std::string> styles_found(const fs::path& path) {
   std::vector<std::string> report = text_lines(inspect.out);
   EXPECT_FALSE(report.empty());
   if (!report.empty()) {
-    EXPECT_EQ(report.back(), "valid: hairstyle.styles v4");
+    EXPECT_EQ(report.back(), "valid: hairstyle.styles v5");
   }
   hair::h5::File file = hair::h5::File::open_read_only(path);
   EXPECT_EQ(hair::h5::read_string_attribute(file, "/", "stage"), "classify");
@@ -170,11 +170,25 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
         hair::h5::read_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values");
     const std::vector<int8_t> classes =
         hair::h5::read_enum_dataset(file, "/classes/style", hair::style_members());
+    const auto not_fixed = hair::h5::read_vector<uint8_t>(file, "/clusters/fixed_ruled_out");
+    const auto root_share = hair::h5::read_vector<double>(file, "/features/root_share");
+    const auto tip_share = hair::h5::read_vector<double>(file, "/features/tip_share");
+    const auto gathering = hair::h5::read_vector<double>(file, "/features/gathering_ratio");
     EXPECT_DOUBLE_EQ(certainty.unsure_below, unsure_below);
     int ruled = 0, unsure = 0;
+    const auto fixed = static_cast<int8_t>(hair::HairStyle::fixed);
     for (size_t c = 0; c < style.size(); ++c) {
       SCOPED_TRACE("cluster " + std::to_string(c));
       EXPECT_EQ(certainty.pinned[c], 0);
+      // Fixed is ruled out where the strands start at the roots and end in the cluster
+      // without gathering (the default thresholds); the style is then never fixed.
+      if (style[c] >= 0) {
+        EXPECT_EQ(not_fixed[c],
+                  root_share[c] >= 0.9 && tip_share[c] >= 0.9 && gathering[c] >= 0.5 ? 1 : 0);
+        if (not_fixed[c] && !certainty.ruled[c]) {
+          EXPECT_NE(style[c], fixed);
+        }
+      }
       if (style[c] < 0) {
         EXPECT_EQ(certainty.confidence[c], 0.0);
         EXPECT_EQ(certainty.unsure[c], 0);
@@ -188,13 +202,20 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
         continue;
       }
       // The SVM's margin: the smallest decision value of the contests of the style it
-      // gave, signed for it (pairs i < j in order, > 0 for i), within [0, 1].
-      EXPECT_EQ(style[c], svm_style[c]);
+      // gave, signed for it (pairs i < j in order, > 0 for i), within [0, 1]; where fixed is
+      // ruled out, over the contests against the other styles.
+      if (!not_fixed[c] || svm_style[c] != fixed) {
+        EXPECT_EQ(style[c], svm_style[c]);
+      }
       const auto k = std::find(classes.begin(), classes.end(), style[c]) - classes.begin();
+      const auto out = not_fixed[c]
+                           ? std::find(classes.begin(), classes.end(), fixed) - classes.begin()
+                           : static_cast<Eigen::Index>(classes.size());
       double margin = 1.0;
       Eigen::Index pair = 0;
       for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(classes.size()); ++i)
         for (Eigen::Index j = i + 1; j < static_cast<Eigen::Index>(classes.size()); ++j, ++pair) {
+          if (i == out || j == out) continue;
           const double value = decision(static_cast<Eigen::Index>(c), pair);
           if (i == k) margin = std::min(margin, value);
           if (j == k) margin = std::min(margin, -value);

@@ -341,10 +341,14 @@ int main(int argc, char** argv) {
         // The paper's criteria decide where they hold, as in classify (their features are in
         // the extended set; the paper's set lacks tip_share).
         std::vector<int32_t> decided;
-        if (rules.enabled && hair::has_decisive_rule_features(table.feature_names))
+        std::vector<uint8_t> fixed_ruled_out;
+        if (rules.enabled && hair::has_decisive_rule_features(table.feature_names)) {
           decided = hair::decisive_styles_of_rows(table.rows, table.feature_names, rules);
-        hair::ModelHoldout holdout = hair::leave_one_model_out(
-            table.rows, int_labels(table), table.model, real, strands, params, decided);
+          fixed_ruled_out = hair::fixed_ruled_out_of_rows(table.rows, table.feature_names, rules);
+        }
+        hair::ModelHoldout holdout =
+            hair::leave_one_model_out(table.rows, int_labels(table), table.model, real, strands,
+                                      params, decided, fixed_ruled_out);
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - holdout_start).count();
         int ruled = static_cast<int>(std::count(holdout.ruled.begin(), holdout.ruled.end(), 1));
@@ -357,9 +361,11 @@ int main(int argc, char** argv) {
                                                    : "The classifiers alone "
                                                      "(--no-decisive-rules).\n\n")
                        : fmt::format("The paper's criteria decide {} of the {} held-out clusters "
-                                     "(classify's decisive rules, default thresholds); the "
-                                     "classifiers the rest.\n\n",
-                                     ruled, holdout.truth.size())) +
+                                     "(classify's decisive rules, default thresholds) and rule "
+                                     "fixed out for {} more; the classifiers the rest.\n\n",
+                                     ruled, holdout.truth.size(),
+                                     std::count(holdout.fixed_ruled_out.begin(),
+                                                holdout.fixed_ruled_out.end(), 1))) +
                   hair::model_holdout_markdown(holdout, table.cluster) + "\n" +
                   fmt::format("Both classifiers, grid search included: {:.1f} s.\n", seconds);
         spdlog::info(

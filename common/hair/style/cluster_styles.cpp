@@ -3,11 +3,14 @@
 #include <algorithm>
 
 #include "hair/core/error.h"
+#include "hair/style/hair_style.h"
+#include "hair/style/puk_svm.h"
+#include "hair/style/random_forest.h"
 
 namespace hair {
 
-double svm_margin_confidence(const PukSvm& svm, std::span<const double> decision_values,
-                             size_t chosen) {
+double svm_margin_confidence_without(const PukSvm& svm, std::span<const double> decision_values,
+                                     size_t chosen, size_t excluded) {
   if (decision_values.size() != svm.decision_functions.size())
     throw Error::usage("svm margin confidence: " + std::to_string(decision_values.size()) +
                        " decision values for " + std::to_string(svm.decision_functions.size()) +
@@ -15,12 +18,21 @@ double svm_margin_confidence(const PukSvm& svm, std::span<const double> decision
   double smallest = 1.0;  // one class: nothing to lose
   for (size_t p = 0; p < decision_values.size(); ++p) {
     const SvmDecisionFunction& function = svm.decision_functions[p];
-    if (static_cast<size_t>(function.first) == chosen)
+    const auto first = static_cast<size_t>(function.first);
+    const auto second = static_cast<size_t>(function.second);
+    if (first == excluded || second == excluded) continue;
+    if (first == chosen)
       smallest = std::min(smallest, decision_values[p]);
-    else if (static_cast<size_t>(function.second) == chosen)
+    else if (second == chosen)
       smallest = std::min(smallest, -decision_values[p]);
   }
   return std::clamp(smallest, 0.0, 1.0);
+}
+
+double svm_margin_confidence(const PukSvm& svm, std::span<const double> decision_values,
+                             size_t chosen) {
+  // No class index is svm.class_labels.size(): every contest counts.
+  return svm_margin_confidence_without(svm, decision_values, chosen, svm.class_labels.size());
 }
 
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
@@ -44,6 +56,13 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
   result.confidence.assign(static_cast<size_t>(cluster_count), 0.0);
   result.pinned.assign(static_cast<size_t>(cluster_count), 0);
   result.ruled.assign(static_cast<size_t>(cluster_count), 0);
+  result.fixed_ruled_out.assign(static_cast<size_t>(cluster_count), 0);
+  const auto fixed = static_cast<int32_t>(HairStyle::fixed);
+  auto svm_index = [&](int32_t label) {
+    return static_cast<size_t>(
+        std::find(model.svm.class_labels.begin(), model.svm.class_labels.end(), label) -
+        model.svm.class_labels.begin());
+  };
   for (Eigen::Index c = 0; c < cluster_count; ++c) {
     if (features.strand_count[static_cast<size_t>(c)] == 0) continue;
     Eigen::RowVectorXd row = rows.row(c);
@@ -52,8 +71,16 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
     auto i = static_cast<size_t>(c);
     result.svm_style[i] = static_cast<int8_t>(prediction.svm_label);
     result.forest_style[i] = static_cast<int8_t>(prediction.forest_label);
-    result.style[i] =
-        classifier == StyleClassifierKind::svm ? result.svm_style[i] : result.forest_style[i];
+    const bool not_fixed = fixed_ruled_out(features.paper[i], rules);
+    result.fixed_ruled_out[i] = not_fixed ? 1 : 0;
+    int32_t chosen_label =
+        classifier == StyleClassifierKind::svm ? prediction.svm_label : prediction.forest_label;
+    if (not_fixed && chosen_label == fixed)
+      chosen_label =
+          classifier == StyleClassifierKind::svm
+              ? svm_label_without(model.svm, prediction.svm_decision_values, fixed)
+              : forest_label_without(model.class_labels, prediction.forest_vote_fraction, fixed);
+    result.style[i] = static_cast<int8_t>(chosen_label);
     for (Eigen::Index p = 0; p < result.svm_decision_values.cols(); ++p)
       result.svm_decision_values(c, p) = prediction.svm_decision_values[static_cast<size_t>(p)];
     for (Eigen::Index k = 0; k < class_count; ++k) {
@@ -66,11 +93,9 @@ ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& mo
     if (chosen < class_count)
       result.confidence[i] =
           classifier == StyleClassifierKind::svm
-              ? svm_margin_confidence(
-                    model.svm, prediction.svm_decision_values,
-                    static_cast<size_t>(std::find(model.svm.class_labels.begin(),
-                                                  model.svm.class_labels.end(), result.style[i]) -
-                                        model.svm.class_labels.begin()))
+              ? svm_margin_confidence_without(
+                    model.svm, prediction.svm_decision_values, svm_index(result.style[i]),
+                    not_fixed ? svm_index(fixed) : model.svm.class_labels.size())
               : result.forest_vote_fraction(c, chosen);
     if (std::optional<HairStyle> decided = decisive_style(features.paper[i], rules)) {
       result.style[i] = static_cast<int8_t>(*decided);

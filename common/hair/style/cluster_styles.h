@@ -34,6 +34,12 @@ struct ClusterStyles {
   /// its confidence is then 1, and svm_style and forest_style still say what the
   /// classifiers would have given.
   std::vector<uint8_t> ruled;
+  /// Per cluster, 1 where the paper's criteria rule fixed out (fixed_ruled_out()): `style`
+  /// is then the chosen classifier's best other class (svm_label_without,
+  /// forest_label_without) where it said fixed, its confidence that of the contests
+  /// between the other classes; svm_style and forest_style still say what the classifiers
+  /// gave.
+  std::vector<uint8_t> fixed_ruled_out;
 };
 
 /// Below this confidence a cluster's style is called unsure (styles.h5 /clusters/unsure,
@@ -50,11 +56,17 @@ inline constexpr double kDefaultUnsureBelow = 0.6;
 /// which is 1 for nearly every row, this grades the answer.
 double svm_margin_confidence(const PukSvm& svm, std::span<const double> decision_values,
                              size_t chosen);
+/// The same over the contests against classes other than index `excluded` (into
+/// svm.class_labels), which was ruled out.
+double svm_margin_confidence_without(const PukSvm& svm, std::span<const double> decision_values,
+                                     size_t chosen, size_t excluded);
 
 /// Classifies every cluster that grown strands run through by its features of the
 /// model's feature set (feature_set_rows(); their names must be the model's); a cluster
 /// without strands gets no style (-1). `classifier` picks which classifier's class is
-/// `style`; where `rules` decide (decisive_style()), they give the style instead.
+/// `style`; where `rules` decide (decisive_style()), they give the style instead, and
+/// where they rule fixed out (fixed_ruled_out()), a classifier's fixed gives way to its
+/// best other class.
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
                              StyleClassifierKind classifier, const DecisiveStyleRules& rules);
 

@@ -125,4 +125,28 @@ SvmPrediction svm_prediction(const PukSvm& svm, const float* row) {
   return prediction;
 }
 
+int32_t svm_label_without(const PukSvm& svm, std::span<const double> decision_values,
+                          int32_t excluded_label) {
+  if (decision_values.size() != svm.decision_functions.size())
+    throw Error::usage("svm_label_without: " + std::to_string(decision_values.size()) +
+                       " decision values for " + std::to_string(svm.decision_functions.size()) +
+                       " decision functions");
+  const size_t classes = svm.class_labels.size();
+  const auto excluded = static_cast<size_t>(
+      std::find(svm.class_labels.begin(), svm.class_labels.end(), excluded_label) -
+      svm.class_labels.begin());
+  const bool excluding = excluded < classes && classes > 1;
+  auto out = [&](int32_t index) { return excluding && static_cast<size_t>(index) == excluded; };
+  std::vector<int32_t> votes(classes, 0);
+  for (size_t p = 0; p < svm.decision_functions.size(); ++p) {
+    const SvmDecisionFunction& function = svm.decision_functions[p];
+    if (out(function.first) || out(function.second)) continue;
+    ++votes[static_cast<size_t>(decision_values[p] > 0 ? function.first : function.second)];
+  }
+  size_t best = classes;
+  for (size_t c = 0; c < classes; ++c)
+    if (!out(static_cast<int32_t>(c)) && (best == classes || votes[c] > votes[best])) best = c;
+  return svm.class_labels[best];
+}
+
 }  // namespace hair

@@ -79,4 +79,12 @@ struct SvmPrediction {
 /// most votes, the first (lowest label) of equals. So it equals OpenCV's, bit for bit.
 SvmPrediction svm_prediction(const PukSvm& svm, const float* row);
 
+/// The class the one-vs-one vote gives when `excluded_label` may not win: only the
+/// contests between two other classes vote (a decision value > 0 for the pair's first
+/// class), the class of most votes wins, the first of equals. The SVM's own label where
+/// the excluded class is not one of its classes or it has no other.
+///   @param[in] decision_values  as SvmPrediction::decision_values
+int32_t svm_label_without(const PukSvm& svm, std::span<const double> decision_values,
+                          int32_t excluded_label);
+
 }  // namespace hair

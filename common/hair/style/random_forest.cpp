@@ -88,4 +88,19 @@ ForestPrediction forest_prediction(const cv::ml::RTrees& forest,
   return prediction;
 }
 
+int32_t forest_label_without(std::span<const int32_t> class_labels, std::span<const double> votes,
+                             int32_t excluded_label) {
+  if (class_labels.size() != votes.size() || class_labels.empty())
+    throw Error::usage("forest_label_without: " + std::to_string(votes.size()) + " votes for " +
+                       std::to_string(class_labels.size()) + " classes");
+  size_t best = class_labels.size();
+  for (size_t c = 0; c < class_labels.size(); ++c)
+    if (class_labels[c] != excluded_label &&
+        (best == class_labels.size() || votes[c] > votes[best]))
+      best = c;
+  if (best == class_labels.size())
+    best = static_cast<size_t>(std::max_element(votes.begin(), votes.end()) - votes.begin());
+  return class_labels[best];
+}
+
 }  // namespace hair

@@ -54,4 +54,11 @@ ForestPrediction forest_prediction(const cv::ml::RTrees& forest,
                                    std::span<const int32_t> class_labels, const float* row,
                                    int feature_count);
 
+/// The class of most votes other than `excluded_label` (the lowest label of equals), as
+/// forest_prediction() orders them; the label of most votes where no other class is there.
+///   @param[in] class_labels  as given to forest_prediction()
+///   @param[in] votes  per class, its votes or their share (ForestPrediction::vote_fraction)
+int32_t forest_label_without(std::span<const int32_t> class_labels, std::span<const double> votes,
+                             int32_t excluded_label);
+
 }  // namespace hair

@@ -4,6 +4,7 @@
 
 #include "hair/core/error.h"
 #include "hair/style/feature_standardization.h"
+#include "hair/style/hair_style.h"
 #include "hair/style/puk_svm.h"
 #include "hair/style/random_forest.h"
 
@@ -13,8 +14,12 @@ HeldOutPrediction held_out_prediction(const Eigen::MatrixXd& features,
                                       std::span<const int32_t> labels,
                                       const std::vector<Eigen::Index>& train,
                                       const std::vector<Eigen::Index>& test,
-                                      const StyleClassifierParams& params, uint64_t grid_seed) {
+                                      const StyleClassifierParams& params, uint64_t grid_seed,
+                                      std::span<const uint8_t> fixed_ruled_out) {
   if (train.empty()) throw Error::usage("held-out prediction: no training rows");
+  if (!fixed_ruled_out.empty() && fixed_ruled_out.size() != static_cast<size_t>(features.rows()))
+    throw Error::usage("held-out prediction: " + std::to_string(fixed_ruled_out.size()) +
+                       " fixed-ruled-out flags for " + std::to_string(features.rows()) + " rows");
   Eigen::MatrixXd train_features = features(train, Eigen::all);
   std::vector<int32_t> train_labels;
   for (Eigen::Index row : train) train_labels.push_back(labels[static_cast<size_t>(row)]);
@@ -34,9 +39,19 @@ HeldOutPrediction held_out_prediction(const Eigen::MatrixXd& features,
                        forest_classes.end());
   for (size_t i = 0; i < test.size(); ++i) {
     const float* row = test_rows.row(static_cast<Eigen::Index>(i)).data();
-    result.svm.push_back(svm_prediction(svm, row).label);
+    const SvmPrediction svm_says = svm_prediction(svm, row);
+    const ForestPrediction forest_says =
+        forest_prediction(*forest, forest_classes, row, static_cast<int>(features.cols()));
+    const auto fixed = static_cast<int32_t>(HairStyle::fixed);
+    const bool not_fixed =
+        !fixed_ruled_out.empty() && fixed_ruled_out[static_cast<size_t>(test[i])] != 0;
+    result.svm.push_back(not_fixed && svm_says.label == fixed
+                             ? svm_label_without(svm, svm_says.decision_values, fixed)
+                             : svm_says.label);
     result.forest.push_back(
-        forest_prediction(*forest, forest_classes, row, static_cast<int>(features.cols())).label);
+        not_fixed && forest_says.label == fixed
+            ? forest_label_without(forest_classes, forest_says.vote_fraction, fixed)
+            : forest_says.label);
   }
   return result;
 }

@@ -28,10 +28,15 @@ struct HeldOutPrediction {
 ///   @param[in] features  n x d, finite
 ///   @param[in] labels  n class labels
 ///   @param[in] train, test  row indices into features (disjoint; train not empty)
+///   @param[in] fixed_ruled_out  empty, or per row of `features` 1 where the paper's
+///       criteria rule fixed out (fixed_ruled_out_of_rows): a test row the classifiers call
+///       fixed there takes the class they give among the others (svm_label_without,
+///       forest_label_without)
 HeldOutPrediction held_out_prediction(const Eigen::MatrixXd& features,
                                       std::span<const int32_t> labels,
                                       const std::vector<Eigen::Index>& train,
                                       const std::vector<Eigen::Index>& test,
-                                      const StyleClassifierParams& params, uint64_t grid_seed);
+                                      const StyleClassifierParams& params, uint64_t grid_seed,
+                                      std::span<const uint8_t> fixed_ruled_out = {});
 
 }  // namespace hair

@@ -92,6 +92,9 @@ void write_styles_file(h5::File& file, const ClusterStyles& styles, const StyleF
   std::vector<uint8_t> ruled = styles.ruled;
   ruled.resize(styles.style.size(), 0);
   h5::write_vector(file, "/clusters/ruled", ruled);
+  std::vector<uint8_t> fixed_ruled_out = styles.fixed_ruled_out;
+  fixed_ruled_out.resize(styles.style.size(), 0);
+  h5::write_vector(file, "/clusters/fixed_ruled_out", fixed_ruled_out);
   h5::write_vector(file, "/clusters/strand_count", features.strand_count);
   h5::write_vector(file, "/clusters/point_count", features.point_count);
   h5::write_matrix<double, Eigen::Dynamic>(file, "/clusters/svm_decision_values",

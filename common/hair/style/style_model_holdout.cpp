@@ -89,15 +89,18 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
                                  const std::vector<std::string>& model_of_row,
                                  const std::vector<bool>& held_out, std::span<const double> weight,
                                  const StyleClassifierParams& params,
-                                 std::span<const int32_t> decided) {
+                                 std::span<const int32_t> decided,
+                                 std::span<const uint8_t> fixed_ruled_out) {
   auto n = labels.size();
   if (static_cast<size_t>(features.rows()) != n || model_of_row.size() != n ||
-      held_out.size() != n || weight.size() != n || (!decided.empty() && decided.size() != n))
-    throw Error::usage("leave-one-model-out: " + std::to_string(features.rows()) +
-                       " feature rows, " + std::to_string(n) + " labels, " +
-                       std::to_string(model_of_row.size()) + " models, " +
-                       std::to_string(held_out.size()) + " flags and " +
-                       std::to_string(weight.size()) + " weights");
+      held_out.size() != n || weight.size() != n || (!decided.empty() && decided.size() != n) ||
+      (!fixed_ruled_out.empty() && fixed_ruled_out.size() != n))
+    throw Error::usage(
+        "leave-one-model-out: " + std::to_string(features.rows()) + " feature rows, " +
+        std::to_string(n) + " labels, " + std::to_string(model_of_row.size()) + " models, " +
+        std::to_string(held_out.size()) + " flags, " + std::to_string(weight.size()) +
+        " weights, " + std::to_string(decided.size()) + " decided styles and " +
+        std::to_string(fixed_ruled_out.size()) + " fixed-ruled-out flags");
   ModelHoldout result;
   for (size_t i = 0; i < n; ++i)
     if (held_out[i]) result.models.push_back(model_of_row[i]);
@@ -113,8 +116,9 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
     std::vector<Eigen::Index> train, test;
     for (size_t i = 0; i < n; ++i)
       (model_of_row[i] == result.models[m] ? test : train).push_back(static_cast<Eigen::Index>(i));
-    HeldOutPrediction prediction = held_out_prediction(features, labels, train, test, params,
-                                                       params.seed + 1 + static_cast<uint64_t>(m));
+    HeldOutPrediction prediction =
+        held_out_prediction(features, labels, train, test, params,
+                            params.seed + 1 + static_cast<uint64_t>(m), fixed_ruled_out);
     std::vector<double> distance =
         nearest_row_distances(features(train, Eigen::all), features(test, Eigen::all));
     for (size_t i = 0; i < test.size(); ++i) {
@@ -126,6 +130,8 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
       result.forest.push_back(ruled ? decided[row] : prediction.forest[i]);
       result.weight.push_back(weight[row]);
       result.ruled.push_back(ruled ? 1 : 0);
+      result.fixed_ruled_out.push_back(
+          !ruled && !fixed_ruled_out.empty() && fixed_ruled_out[row] ? 1 : 0);
       result.nearest_training_distance.push_back(distance[i]);
     }
     result.model_rows.push_back(static_cast<int>(test.size()));
@@ -221,7 +227,9 @@ std::string model_holdout_markdown(const ModelHoldout& holdout,
 
   text +=
       "Per held-out model: each cluster as `id truth → forest / SVM (strands, distance to the "
-      "nearest training cluster)`\n\n"
+      "nearest training cluster)`; `by rule` where the paper's criteria decided its style, `not "
+      "fixed by rule` where they ruled fixed out and the classifiers chose among the other "
+      "styles\n\n"
       "| model | strands right (forest) | strands right (SVM) | clusters |\n|---|---:|---:|---|\n";
   size_t row = 0;
   for (size_t m = 0; m < holdout.models.size(); ++m) {
@@ -237,14 +245,19 @@ std::string model_holdout_markdown(const ModelHoldout& holdout,
       std::string distance = row < holdout.nearest_training_distance.size()
                                  ? fmt::format(", d {:.1f}", holdout.nearest_training_distance[row])
                                  : "";
-      clusters += holdout.ruled[row]
-                      ? fmt::format("{} {} → {} by rule ({:.0f}{})", cluster,
-                                    hair_style_label_text(holdout.truth[row]),
-                                    hair_style_label_text(holdout.svm[row]), w, distance)
-                      : fmt::format("{} {} → {} / {} ({:.0f}{})", cluster,
-                                    hair_style_label_text(holdout.truth[row]),
-                                    hair_style_label_text(holdout.forest[row]),
-                                    hair_style_label_text(holdout.svm[row]), w, distance);
+      clusters +=
+          holdout.ruled[row]
+              ? fmt::format("{} {} → {} by rule ({:.0f}{})", cluster,
+                            hair_style_label_text(holdout.truth[row]),
+                            hair_style_label_text(holdout.svm[row]), w, distance)
+              : fmt::format("{} {} → {} / {}{} ({:.0f}{})", cluster,
+                            hair_style_label_text(holdout.truth[row]),
+                            hair_style_label_text(holdout.forest[row]),
+                            hair_style_label_text(holdout.svm[row]),
+                            row < holdout.fixed_ruled_out.size() && holdout.fixed_ruled_out[row]
+                                ? ", not fixed by rule"
+                                : "",
+                            w, distance);
     }
     // A model is named by its folder; its last part says which.
     std::string name = std::filesystem::path(holdout.models[m]).filename().string();

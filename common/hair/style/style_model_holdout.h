@@ -45,6 +45,8 @@ struct ModelHoldout {
   std::vector<int32_t> forest;              ///< per held-out row, the random forest's
   std::vector<double> weight;               ///< per held-out row
   std::vector<uint8_t> ruled;               ///< per held-out row, 1 where `decided` gave its style
+  /// Per held-out row, 1 where `fixed_ruled_out` held (fixed was not a choice there).
+  std::vector<uint8_t> fixed_ruled_out;
   /// Per held-out row: the Euclidean distance to the nearest training row of its fold, in
   /// features standardised on those training rows (standard deviations): how far the
   /// cluster lies from anything the classifiers learnt from.
@@ -65,13 +67,16 @@ struct ModelHoldout {
 ///   @param[in] decided  n styles decided without training (the paper's criteria,
 ///       decisive_style_rules.h), -1 where none; where one is given it is both
 ///       classifiers' answer, as in classify. Empty: none.
+///   @param[in] fixed_ruled_out  n flags (fixed_ruled_out_of_rows), or empty: where set, a
+///       classifier that says fixed gives its best other class instead, as in classify.
 ///
 /// Deterministic. Throws hair::Error (usage) for lengths that differ or no flagged row.
 ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<const int32_t> labels,
                                  const std::vector<std::string>& model_of_row,
                                  const std::vector<bool>& held_out, std::span<const double> weight,
                                  const StyleClassifierParams& params,
-                                 std::span<const int32_t> decided = {});
+                                 std::span<const int32_t> decided = {},
+                                 std::span<const uint8_t> fixed_ruled_out = {});
 
 /// Per row of `queries` (m x d), the Euclidean distance to the nearest row of `training`
 /// (n x d, n >= 1), both standardised on `training` (feature_standardization()).

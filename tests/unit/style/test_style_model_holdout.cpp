@@ -173,6 +173,44 @@ TEST(LeaveOneModelOut, DecidedStylesTakeThePlaceOfBothClassifiers) {
                Error);
 }
 
+TEST(LeaveOneModelOut, WhereFixedIsRuledOutTheClassifiersGiveTheirBestOtherClass) {
+  Corpus corpus = corpus_with_a_contrary_real_model();
+  // Rule fixed (1) out for the real rows of fixed's blob: both classifiers call them fixed
+  // without the flags, something else with them; every other row as before.
+  std::vector<uint8_t> not_fixed(corpus.model.size(), 0);
+  for (size_t row = 0; row < not_fixed.size(); ++row)
+    if (corpus.real[row] && corpus.model[row] != "real_contrary" && corpus.data.labels[row] == 1)
+      not_fixed[row] = 1;
+  ModelHoldout plain = leave_one_model_out(corpus.data.features, corpus.data.labels, corpus.model,
+                                           corpus.real, corpus.strands, quick_params());
+  ModelHoldout ruled =
+      leave_one_model_out(corpus.data.features, corpus.data.labels, corpus.model, corpus.real,
+                          corpus.strands, quick_params(), {}, not_fixed);
+  ASSERT_EQ(plain.rows, ruled.rows);
+  int flagged = 0;
+  for (size_t row = 0; row < ruled.rows.size(); ++row) {
+    const bool flag = not_fixed[static_cast<size_t>(ruled.rows[row])] != 0;
+    EXPECT_EQ(ruled.fixed_ruled_out[row], flag ? 1 : 0);
+    if (flag) {
+      ++flagged;
+      EXPECT_EQ(plain.svm[row], 1);
+      EXPECT_EQ(plain.forest[row], 1);
+      EXPECT_NE(ruled.svm[row], 1);
+      EXPECT_NE(ruled.forest[row], 1);
+    } else {
+      EXPECT_EQ(ruled.svm[row], plain.svm[row]);
+      EXPECT_EQ(ruled.forest[row], plain.forest[row]);
+    }
+  }
+  EXPECT_GE(flagged, 1);
+  std::vector<int32_t> cluster(corpus.model.size(), 3);
+  EXPECT_TRUE(contains(model_holdout_markdown(ruled, cluster), ", not fixed by rule ("));
+  std::vector<uint8_t> too_few(3, 0);
+  EXPECT_THROW(leave_one_model_out(corpus.data.features, corpus.data.labels, corpus.model,
+                                   corpus.real, corpus.strands, quick_params(), {}, too_few),
+               Error);
+}
+
 TEST(LeaveOneModelOut, RefusesMismatchedInputsAndNothingToHoldOut) {
   Corpus corpus = corpus_with_a_contrary_real_model();
   std::vector<bool> none(corpus.real.size(), false);
