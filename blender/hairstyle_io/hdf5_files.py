@@ -10,7 +10,7 @@ import numpy as np
 SCHEMA_VERSIONS = {
     "hairstyle.extract": 3,
     "hairstyle.strands": 2,
-    "hairstyle.styles": 4,
+    "hairstyle.styles": 5,
     "hairstyle.frames": 1,
     "hairstyle.guides": 1,
 }
