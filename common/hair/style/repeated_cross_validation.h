@@ -1,10 +1,10 @@
 #pragma once
 // Repeated cross-validation of the style classifiers: the same k folds drawn again with
 // other seeds, so that an accuracy is read with the spread that the draw of folds alone
-// gives it (Bouckaert & Frank 2004, "Evaluating the replicability of significance tests
-// for comparing learning algorithms": one 10-fold run of about a thousand rows moves by
-// about a point from one draw of folds to the next; Weka's Experimenter repeats 10-fold
-// cross-validation 10 times for that reason).
+// gives it (one 10-fold run of our 1,049 clusters moves by about half a point from one
+// draw to the next, docs/classify.md). Weka's Experimenter repeats 10-fold
+// cross-validation ten times for that reason, after Bouckaert & Frank 2004, "Evaluating
+// the replicability of significance tests for comparing learning algorithms".
 
 #include <Eigen/Core>
 #include <cstdint>
