@@ -526,6 +526,8 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
       {{extract, clusters, strands, "--model", other_format}, "format"},
       {{extract, clusters, strands, "--model", model, "--classifier", "knn"}, "classifier"},
       {{extract, clusters, strands, "--model", model, "--short_tip_share", "2"}, "short_tip_share"},
+      {{extract, clusters, strands, "--model", model, "--ungathered_gathering_ratio", "1.5"},
+       "ungathered_gathering_ratio"},
       {{extract, clusters, strands, "--model", model, "--fixed_far_scalp_distance_h", "-0.1"},
        "fixed_far_scalp_distance_h"},
       {{extract, clusters, strands}, "--model"},
