@@ -38,7 +38,9 @@
 # GRIDSEARCH_SETS (default "paper"), SIGMAS (default "0.5 1 2 4 8 16"), OMEGAS (default
 # "0.5 1 2 5"), CS (default "0.1 1 10 100"), INNER_FOLDS (default 5), REPORT (our
 # hair-train-style --report, default TABLES_DIR/../report.md; compared when present),
-# WEKA_LOGS (a folder to keep Weka's raw outputs in).
+# WEKA_LOGS (a folder to keep Weka's raw outputs in), LENGTH_LOG_OFFSET (default 0.1, as
+# hair-train-style's --length-log-offset) and LINEAR (1: every feature as it is, as
+# --linear-features): how the lengths and the node count reach the classifiers.
 set -euo pipefail
 
 if [[ $# -lt 1 || $# -gt 2 || ! -d $1 ]]; then
@@ -142,6 +144,26 @@ for set in paper extended raw; do
   if [[ -f $tables/features_$set.arff ]]; then sets+=("$set"); fi
 done
 [[ ${#sets[@]} -gt 0 ]] || { echo "$0: no features_{paper,extended,raw}.arff in $tables" >&2; exit 1; }
+
+# The classifiers' input, as hair-train-style gives it to ours: lengths in H (attributes
+# named *_h) as log(x + LENGTH_LOG_OFFSET), the node count as log(x + 1)
+# (feature_log_offsets); LENGTH_LOG_OFFSET=0 leaves the lengths as they are, LINEAR=1
+# every attribute (hair-train-style --linear-features).
+length_log_offset=${LENGTH_LOG_OFFSET:-0.1}
+for set in "${sets[@]}"; do
+  awk -v c="$length_log_offset" -v linear="${LINEAR:-0}" '
+    toupper($1) == "@ATTRIBUTE" { ++n; name = $2; gsub(/["\047]/, "", name)
+      if (linear != 1 && name ~ /_h$/ && c > 0) offset[n] = c
+      if (linear != 1 && name == "middle_node_count") offset[n] = 1
+      print; next }
+    toupper($1) == "@DATA" { data = 1; print; next }
+    data && !/^[ \t]*(%|$)/ { k = split($0, v, ",")
+      for (i = 1; i <= k; ++i) if (i in offset) v[i] = sprintf("%.17g", log((v[i] > 0 ? v[i] : 0) + offset[i]))
+      line = v[1]; for (i = 2; i <= k; ++i) line = line "," v[i]; print line; next }
+    { print }' "$tables/features_$set.arff" >"$work/features_$set.arff"
+done
+tables_in=$tables
+tables=$work
 
 declare -A dims rows_of
 for set in "${sets[@]}"; do
@@ -286,7 +308,7 @@ table=${table/CLASSES/${classes:-in Weka\'s order}}
 
 {
   echo "Weka $weka_version ($jar), $java_version, java -Xmx$heap; $(nproc) cores; $max_jobs Weka runs at a time."
-  echo "Tables: $tables ($(for s in "${sets[@]}"; do printf '%s %s rows x %s features; ' "$s" "${rows_of[$s]}" "${dims[$s]}"; done | sed 's/; $//'))."
+  echo "Tables: $tables_in, lengths and node count as hair-train-style gives them to its classifiers (LENGTH_LOG_OFFSET=$length_log_offset, LINEAR=${LINEAR:-0}) ($(for s in "${sets[@]}"; do printf '%s %s rows x %s features; ' "$s" "${rows_of[$s]}" "${dims[$s]}"; done | sed 's/; $//'))."
   echo "10-fold stratified cross-validation in Weka (-x 10 -s 1); SMO with -N 1 standardises on each training set."
   gridded=$(for s in "${sets[@]}"; do if [[ $grid_sets == *" $s "* ]]; then printf ' %s' "$s"; fi; done)
   echo "Nested grid search (GRID_SETS) on:${gridded:- none}; the other feature sets have fixed SVM settings only."

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -234,10 +235,11 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
               unsure);
 
   // Hair it has not seen: hair-synth's low tail at a seed outside the corpus's. Asked to be
-  // surer, no cluster becomes surer, the same ones are decided by the criteria, and the
-  // log lists the unsure ones (at 0.99, its tail: 0.61 with the models of session 11,
-  // whose cap and band are 1.0; 0.86 and 0.42 with session 10's, 0.56-0.92 with session
-  // 7's; ponytail01's front crown was the unsure one of earlier models).
+  // surer than its least sure cluster, no cluster becomes surer, the same ones are decided
+  // by the criteria, and the log lists the unsure ones. (With session 14's models every
+  // cluster of this tail is sure to a full margin, 1.0, and ponytail01's least sure one is
+  // 0.9996; session 11's called the tail 0.61 sure, session 10's 0.42, and ponytail01's
+  // front crown was the unsure one of earlier models.)
   const fs::path data = directory() / "unseen";
   fs::create_directories(data);
   auto synth = run_command(kBin / "hair-synth",
@@ -247,14 +249,39 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
   const SampleOutputs unseen = hair::test::run_sample_pipeline(directory() / "unseen_low_tail",
                                                                data / "low_tail.obj", 10000);
   const auto [ruled_default, unsure_default] = check(styles(unseen), 0.6);
-  const fs::path strict = unseen.strands.parent_path() / "styles_strict.h5";
-  std::vector<std::string> arguments = inputs(unseen);
-  arguments.insert(arguments.end(), {"--unsure_below", "0.99", "-o", strict.string()});
+  // The least confidence of a cluster the classifier decided, on either mesh.
+  double least = 1.0;
+  const SampleOutputs* least_of = &unseen;
+  for (const SampleOutputs* outputs : {&unseen, &ponytail}) {
+    hair::h5::File file = hair::h5::File::open_read_only(styles(*outputs));
+    const hair::StyleCertainty certainty = hair::read_style_certainty(file);
+    const std::vector<int8_t> style = hair::read_cluster_styles(file);
+    for (size_t c = 0; c < style.size(); ++c)
+      if (style[c] >= 0 && !certainty.ruled[c] && certainty.confidence[c] < least) {
+        least = certainty.confidence[c];
+        least_of = outputs;
+      }
+  }
+  ASSERT_LT(least, 1.0) << "every classified cluster of both meshes is sure to a full margin";
+  std::printf("[ classify ] the least sure cluster: %.6f (%s)\n", least,
+              least_of == &unseen ? "the unseen low tail" : "ponytail01");
+  const double strict_below = std::nextafter(least, 2.0);
+  const auto exact = [](double value) {  // reads back as the same double
+    std::ostringstream text;
+    text.precision(17);
+    text << value;
+    return text.str();
+  };
+  const fs::path strict = least_of->strands.parent_path() / "styles_strict.h5";
+  std::vector<std::string> arguments = inputs(*least_of);
+  arguments.insert(arguments.end(), {"--unsure_below", exact(strict_below), "-o", strict.string()});
   auto run = run_command(kBin / "classify", arguments);
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const auto [ruled_strict, unsure_strict] = check(strict, 0.99);
-  EXPECT_EQ(ruled_strict, ruled_default);
-  EXPECT_GE(unsure_strict, unsure_default);
+  const auto [ruled_strict, unsure_strict] = check(strict, strict_below);
+  const auto [ruled_before, unsure_before] =
+      least_of == &unseen ? std::pair{ruled_default, unsure_default} : std::pair{ruled, unsure};
+  EXPECT_EQ(ruled_strict, ruled_before);
+  EXPECT_GE(unsure_strict, unsure_before);
   EXPECT_GE(unsure_strict, 1);
   EXPECT_NE((run.out + run.err).find("unsure"), std::string::npos) << run.out << run.err;
 }
@@ -504,8 +531,8 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
   hair::test::write_text_file(directory / "text.h5", "not HDF5\n");
   const std::string extract = braid.extract.string(), clusters = braid.clusters.string(),
                     strands = braid.strands.string(), model = kModel.string();
-  const std::string version_2 =
-      edited_model(directory / "v2.yml", "version: 1", "version: 2").string();
+  const std::string version_3 =
+      edited_model(directory / "v3.yml", "version: 2", "version: 3").string();
   const std::string other_format =
       edited_model(directory / "format.yml", "hairstyle.style_model", "something.else").string();
   auto pins = [&](const std::string& name, const std::string& text) {
@@ -522,7 +549,7 @@ TEST_F(ClassifyCli, WrongInputsFailCleanly) {
       {{extract, ponytail.clusters.string(), strands, "--model", model}, "another model"},
       {{extract, clusters, ponytail.strands.string(), "--model", model}, "another model"},
       {{extract, clusters, strands, "--model", (directory / "none.yml").string()}, "none.yml"},
-      {{extract, clusters, strands, "--model", version_2}, "version 2"},
+      {{extract, clusters, strands, "--model", version_3}, "version 3"},
       {{extract, clusters, strands, "--model", other_format}, "format"},
       {{extract, clusters, strands, "--model", model, "--classifier", "knn"}, "classifier"},
       {{extract, clusters, strands, "--model", model, "--short_tip_share", "2"}, "short_tip_share"},

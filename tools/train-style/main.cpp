@@ -217,6 +217,16 @@ int main(int argc, char** argv) {
                  "first repeat in full")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
+  bool linear_features = false;
+  app.add_flag("--linear-features", linear_features,
+               "give the classifiers every feature as it is, instead of the lengths in H and the "
+               "node count on a log scale (feature_log_offsets; the models before 2026-11-27)");
+  double length_log_offset_h = hair::kLengthLogOffsetH;
+  app.add_option("--length-log-offset", length_log_offset_h,
+                 "the offset c of the lengths' log scale, log(length + c), in H (0: lengths as "
+                 "they are, the node count still on its log scale)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   std::string fold_by = "cluster";
   app.add_option("--fold-by", fold_by,
                  "cluster: stratified folds of clusters (the paper's cross-validation); model: "
@@ -271,6 +281,15 @@ int main(int argc, char** argv) {
                                      "hairstyle_" + set + "_features");
       }
     }
+    // The classifiers' settings for a feature set: the log scale of its lengths and counts.
+    const auto params_of = [&params, linear_features,
+                            length_log_offset_h](const hair::StyleTable& table) {
+      hair::StyleClassifierParams set_params = params;
+      if (!linear_features)
+        set_params.feature_log_offsets =
+            hair::feature_log_offsets(table.feature_names, length_log_offset_h);
+      return set_params;
+    };
     const std::map<std::string, std::string> titles = {
         {"paper", "The paper's features"},
         {"extended", "Extended features (the paper's and eleven of ours)"},
@@ -293,7 +312,7 @@ int main(int argc, char** argv) {
         const hair::StyleTable& table = tables.at(set);
         auto cv_start = std::chrono::steady_clock::now();
         hair::RepeatedCrossValidation repeated = hair::repeated_style_cross_validation(
-            table.rows, int_labels(table), real, params, repeats, folds_for_seed);
+            table.rows, int_labels(table), real, params_of(table), repeats, folds_for_seed);
         const hair::StyleCrossValidation& cv = repeated.repeats.front();
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - cv_start).count();
@@ -348,7 +367,7 @@ int main(int argc, char** argv) {
         }
         hair::ModelHoldout holdout =
             hair::leave_one_model_out(table.rows, int_labels(table), table.model, real, strands,
-                                      params, decided, fixed_ruled_out);
+                                      params_of(table), decided, fixed_ruled_out);
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - holdout_start).count();
         int ruled = static_cast<int>(std::count(holdout.ruled.begin(), holdout.ruled.end(), 1));
@@ -379,7 +398,7 @@ int main(int argc, char** argv) {
       for (const char* set : {"paper", "extended"}) {
         const hair::StyleTable& table = tables.at(set);
         hair::StyleModel model = hair::trained_style_model(table.rows, int_labels(table), set,
-                                                           table.feature_names, params);
+                                                           table.feature_names, params_of(table));
         fs::path path = fs::path(models_folder) / ("style_" + std::string(set) + ".yml");
         hair::write_style_model(path, model);
         spdlog::info("wrote {}", path.string());

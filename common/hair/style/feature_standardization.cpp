@@ -25,8 +25,47 @@ void check_finite_features(const Eigen::MatrixXd& rows,
     }
 }
 
-FeatureStandardization feature_standardization(const Eigen::MatrixXd& rows) {
+std::vector<double> feature_log_offsets(std::span<const std::string> names,
+                                        double length_offset_h) {
+  std::vector<double> offsets;
+  for (const std::string& name : names)
+    offsets.push_back(name.ends_with("_h")          ? length_offset_h
+                      : name == "middle_node_count" ? kCountLogOffset
+                                                    : 0.0);
+  return offsets;
+}
+
+namespace {
+
+/// `rows` with every column of positive log offset c taken to log(max(x, 0) + c): lengths,
+/// distances and counts are never negative (a negative one, which none of ours is, counts
+/// as 0).
+Eigen::MatrixXd log_scaled(const Eigen::MatrixXd& rows, const Eigen::VectorXd& log_offset) {
+  if (log_offset.size() == 0) return rows;
+  Eigen::MatrixXd scaled = rows;
+  for (Eigen::Index column = 0; column < rows.cols(); ++column)
+    if (log_offset[column] > 0)
+      scaled.col(column) = (rows.col(column).array().max(0.0) + log_offset[column]).log().matrix();
+  return scaled;
+}
+
+}  // namespace
+
+FeatureStandardization feature_standardization(const Eigen::MatrixXd& original_rows,
+                                               std::span<const double> log_offsets) {
   FeatureStandardization result;
+  if (!log_offsets.empty()) {
+    if (log_offsets.size() != static_cast<size_t>(original_rows.cols()))
+      throw Error::usage("feature standardisation: " + std::to_string(log_offsets.size()) +
+                         " log offsets for " + std::to_string(original_rows.cols()) + " features");
+    for (double offset : log_offsets)
+      if (!(offset >= 0) || !std::isfinite(offset))
+        throw Error::usage("feature standardisation: a log offset of " + std::to_string(offset) +
+                           " (must be 0 or positive, and finite)");
+    result.log_offset = Eigen::Map<const Eigen::VectorXd>(
+        log_offsets.data(), static_cast<Eigen::Index>(log_offsets.size()));
+  }
+  const Eigen::MatrixXd rows = log_scaled(original_rows, result.log_offset);
   auto n = static_cast<double>(rows.rows());
   result.mean = rows.colwise().sum().transpose() / n;
   result.scale.resize(rows.cols());
@@ -42,7 +81,8 @@ FeatureStandardization feature_standardization(const Eigen::MatrixXd& rows) {
 }
 
 FloatRows standardized_rows(const FeatureStandardization& standardization,
-                            const Eigen::MatrixXd& rows) {
+                            const Eigen::MatrixXd& original_rows) {
+  const Eigen::MatrixXd rows = log_scaled(original_rows, standardization.log_offset);
   return ((rows.rowwise() - standardization.mean.transpose()).array().rowwise() /
           standardization.scale.transpose().array())
       .cast<float>();

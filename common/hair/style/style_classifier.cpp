@@ -26,7 +26,7 @@ StyleModel trained_style_model(const Eigen::MatrixXd& features, std::span<const 
   StyleModel model;
   model.feature_set = std::move(feature_set);
   model.feature_names = std::move(feature_names);
-  model.standardization = feature_standardization(features);
+  model.standardization = feature_standardization(features, params.feature_log_offsets);
   FloatRows rows = standardized_rows(model.standardization, features);
   model.svm_selection = selected_puk_svm_params(rows, labels, params.svm_grid, params.inner_folds,
                                                 params.seed + 1 + params.folds);

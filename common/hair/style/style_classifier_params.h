@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "hair/style/puk_svm_grid_search.h"
 #include "hair/style/random_forest.h"
@@ -37,6 +38,11 @@ struct StyleClassifierParams {
   /// forest (docs/measured/classify_real_holdout.md), though the paper found the forest
   /// the more accurate in its cross-validation (86.7% against 84.8%).
   StyleClassifierKind default_classifier = StyleClassifierKind::svm;
+  /// Per feature, the offset c of its log scale, log(max(x, 0) + c), before the
+  /// standardisation (feature_log_offsets(): lengths in H and the node count); 0 for a
+  /// feature taken as it is; empty: every feature as it is. hair-train-style sets it from
+  /// the feature names; a trained model keeps it (StyleModel::standardization).
+  std::vector<double> feature_log_offsets;
 
   /// Throws hair::Error (usage) naming the first bad setting and its value.
   void check() const;

@@ -24,7 +24,8 @@ HeldOutPrediction held_out_prediction(const Eigen::MatrixXd& features,
   std::vector<int32_t> train_labels;
   for (Eigen::Index row : train) train_labels.push_back(labels[static_cast<size_t>(row)]);
 
-  FeatureStandardization standardization = feature_standardization(train_features);
+  FeatureStandardization standardization =
+      feature_standardization(train_features, params.feature_log_offsets);
   FloatRows train_rows = standardized_rows(standardization, train_features);
   FloatRows test_rows = standardized_rows(standardization, features(test, Eigen::all));
 

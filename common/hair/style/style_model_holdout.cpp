@@ -119,8 +119,8 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
     HeldOutPrediction prediction =
         held_out_prediction(features, labels, train, test, params,
                             params.seed + 1 + static_cast<uint64_t>(m), fixed_ruled_out);
-    std::vector<double> distance =
-        nearest_row_distances(features(train, Eigen::all), features(test, Eigen::all));
+    std::vector<double> distance = nearest_row_distances(
+        features(train, Eigen::all), features(test, Eigen::all), params.feature_log_offsets);
     for (size_t i = 0; i < test.size(); ++i) {
       auto row = static_cast<size_t>(test[i]);
       bool ruled = !decided.empty() && decided[row] >= 0;
@@ -144,12 +144,13 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
 }
 
 std::vector<double> nearest_row_distances(const Eigen::MatrixXd& training,
-                                          const Eigen::MatrixXd& queries) {
+                                          const Eigen::MatrixXd& queries,
+                                          std::span<const double> log_offsets) {
   if (training.rows() == 0 || training.cols() != queries.cols())
     throw Error::usage("nearest row distances: " + std::to_string(training.rows()) + " x " +
                        std::to_string(training.cols()) + " training rows, " +
                        std::to_string(queries.cols()) + " query columns");
-  FeatureStandardization standardization = feature_standardization(training);
+  FeatureStandardization standardization = feature_standardization(training, log_offsets);
   FloatRows train = standardized_rows(standardization, training);
   FloatRows query = standardized_rows(standardization, queries);
   std::vector<double> distance(static_cast<size_t>(queries.rows()));

@@ -79,9 +79,11 @@ ModelHoldout leave_one_model_out(const Eigen::MatrixXd& features, std::span<cons
                                  std::span<const uint8_t> fixed_ruled_out = {});
 
 /// Per row of `queries` (m x d), the Euclidean distance to the nearest row of `training`
-/// (n x d, n >= 1), both standardised on `training` (feature_standardization()).
+/// (n x d, n >= 1), both standardised on `training` (feature_standardization(), with
+/// `log_offsets`).
 std::vector<double> nearest_row_distances(const Eigen::MatrixXd& training,
-                                          const Eigen::MatrixXd& queries);
+                                          const Eigen::MatrixXd& queries,
+                                          std::span<const double> log_offsets = {});
 
 /// The evaluation as Markdown: accuracy weighted by strands and by clusters, per-class
 /// recall and precision (strands), the confusion in strands, the accuracy by distance to

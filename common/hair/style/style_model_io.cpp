@@ -240,6 +240,10 @@ std::string style_model_text(const StyleModel& model) {
 
   fs << "standardization"
      << "{";
+  const Eigen::VectorXd log_offset = model.standardization.log_offset.size() == 0
+                                         ? Eigen::VectorXd::Zero(model.standardization.mean.size())
+                                         : model.standardization.log_offset;
+  fs << "log_offset" << values_of(log_offset);
   fs << "mean" << values_of(model.standardization.mean);
   fs << "scale" << values_of(model.standardization.scale);
   fs << "}";
@@ -343,13 +347,19 @@ StyleModel style_model_from_text(const std::string& text, const std::string& nam
   model.default_classifier = *kind;
 
   cv::FileNode standardization = reader.child(root, "", "standardization");
+  std::vector<double> log_offset = reader.reals(standardization, "/standardization", "log_offset");
   std::vector<double> mean = reader.reals(standardization, "/standardization", "mean");
   std::vector<double> scale = reader.reals(standardization, "/standardization", "scale");
+  reader.expect_size(log_offset.size(), static_cast<size_t>(d), "/standardization/log_offset",
+                     "features");
+  for (double value : log_offset)
+    if (!(value >= 0) || !std::isfinite(value))
+      reader.fail("/standardization/log_offset", "holds a value that is negative or not finite");
   reader.expect_size(mean.size(), static_cast<size_t>(d), "/standardization/mean", "features");
   reader.expect_size(scale.size(), static_cast<size_t>(d), "/standardization/scale", "features");
   for (double value : scale)
     if (!(value > 0)) reader.fail("/standardization/scale", "holds a value that is not positive");
-  model.standardization = {vector_of(mean), vector_of(scale)};
+  model.standardization = {vector_of(log_offset), vector_of(mean), vector_of(scale)};
 
   model.svm =
       read_svm(reader, reader.child(root, "", "svm"), model.class_labels, d, model.svm_selection);

@@ -10,17 +10,19 @@ namespace hair {
 
 /// The `format` entry of a style model file.
 inline constexpr const char* kStyleModelFormat = "hairstyle.style_model";
-/// The version this build writes and reads. History: 1, the first.
-inline constexpr int kStyleModelVersion = 1;
+/// The version this build writes and reads. History: 1, the first; 2 (2026-11-27), the
+/// standardisation's log offsets (lengths in H and the node count on a log scale).
+inline constexpr int kStyleModelVersion = 2;
 
 /// A style model as the text of a YAML file (cv::FileStorage), one file per feature set,
 /// meant to be kept in the repository and diffed:
 ///
-///   format: "hairstyle.style_model"    version: 1
+///   format: "hairstyle.style_model"    version: 2
 ///   feature_set, feature_names         the d features, in the order of a row
 ///   training_rows, class_labels, class_names, class_counts
 ///   default_classifier                 "svm" or "random_forest"
-///   standardization: {mean, scale}     d values each
+///   standardization: {log_offset, mean, scale}   d values each (log_offset: 0 for a
+///                                      feature as it is, feature_standardization.h)
 ///   svm: {sigma, omega, c, grid_correct, grid_rows, feature_count, class_labels,
 ///         support_vectors (one row of d values each),
 ///         decision_functions: [{first, second, rho, alpha, sv_index}, ...]}
@@ -40,7 +42,7 @@ void write_style_model(const std::filesystem::path& path, const StyleModel& mode
 /// empty, for tools that only show a model) exactly the caller's feature names in order.
 /// Throws hair::Error (bad input) with one line naming the file, the entry and the
 /// problem, e.g.
-///   "m.yml:/version: model version 2, this build reads version 1: retrain the model ..."
+///   "m.yml:/version: model version 1, this build reads version 2: retrain the model ..."
 ///   "m.yml:/svm/sigma: missing"
 ///   "m.yml:/feature_names: the model's features [a, b] differ from the caller's [a, c] ..."
 StyleModel read_style_model(const std::filesystem::path& path,

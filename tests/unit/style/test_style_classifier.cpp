@@ -218,14 +218,48 @@ TEST_F(StyleModelTest, FileRoundTripPredictsTheSame) {
   }
   std::string text = style_model_text(model_);
   EXPECT_TRUE(contains(text, "format: \"hairstyle.style_model\""));
-  EXPECT_TRUE(contains(text, "version: 1"));
+  EXPECT_TRUE(contains(text, "version: 2"));
+  EXPECT_TRUE(contains(text, "log_offset: [ 0., 0., 0. ]")) << text.substr(0, 600);
   EXPECT_TRUE(contains(text, "default_classifier: svm"));
 }
 
+// A model trained with a length on a log scale keeps the scale in its file and predicts
+// the same read back.
+TEST_F(StyleModelTest, FileRoundTripKeepsTheLogScale) {
+  LabelledRows data = four_blobs(25, 1.2, 35);
+  data.features.col(0) = data.features.col(0).array().exp().matrix();  // lengths: positive
+  StyleClassifierParams params = quick_params();
+  params.feature_log_offsets = {0.03, 0, 0};
+  const StyleModel model = trained_style_model(data.features, data.labels, "test", kNames, params);
+  ASSERT_EQ(model.standardization.log_offset.size(), 3);
+  EXPECT_EQ(model.standardization.log_offset[0], 0.03);
+  const std::filesystem::path path = directory_ / "log_model.yml";
+  write_style_model(path, model);
+  const StyleModel read = read_style_model(path, kNames);
+  EXPECT_EQ(read.standardization.log_offset, model.standardization.log_offset);
+  EXPECT_EQ(read.standardization.mean, model.standardization.mean);
+  int correct = 0;
+  for (Eigen::Index row = 0; row < data.features.rows(); ++row) {
+    Eigen::VectorXd values = data.features.row(row).transpose();
+    StylePrediction a = style_prediction(model, {values.data(), 3});
+    StylePrediction b = style_prediction(read, {values.data(), 3});
+    EXPECT_EQ(a.svm_decision_values, b.svm_decision_values);
+    EXPECT_EQ(a.forest_label, b.forest_label);
+    correct += a.svm_label == data.labels[static_cast<size_t>(row)];
+  }
+  EXPECT_GT(correct, 90);  // the blobs stay apart on the log scale of their first column
+  // A negative log offset in the file is refused.
+  std::string text = style_model_text(model);
+  const size_t at = text.find("log_offset: [ ");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + 14, "-");
+  EXPECT_TRUE(contains(read_error(text), "model.yml:/standardization/log_offset"));
+}
+
 TEST_F(StyleModelTest, WrongVersionIsRejected) {
-  std::string message = read_error(edited_text("version: 1", "version: 2"));
+  std::string message = read_error(edited_text("version: 2", "version: 1"));
   EXPECT_EQ(message,
-            "model.yml:/version: model version 2, this build reads version 1: retrain the model "
+            "model.yml:/version: model version 1, this build reads version 2: retrain the model "
             "with this build");
 }
 
