@@ -26,9 +26,10 @@ struct FeatureStandardization {
 
 /// Log offset of a length or distance in head heights (a feature named *_h): lengths
 /// compare by their ratio, so that a cluster 0.2 H long differs from one 0.4 H long as
-/// one 1 H long does from one 2 H long, whatever the mesh's units and the hair's scale;
-/// 0.03 H (7 mm), one and a half growing steps, is where differences stop mattering
-/// (lengths under it, and a strand's distance to the skin at its root, are all "none").
+/// one 1 H long does from one 2 H long, whatever the mesh's units and the hair's scale.
+/// The offset keeps the lengths under it alike (a strand's distance to the skin at its
+/// root, a missing twist: 0); 0.1 H (2.4 cm) was chosen on the corpus's cross-validation,
+/// where 0.03-0.1 H tie and 0.3 H is worse (docs/classify.md, "Classifiers").
 inline constexpr double kLengthLogOffsetH = 0.1;
 /// Log offset of a count (middle_node_count): one node more counts for less the more
 /// there are, so that a braid cut into 29 pieces lies near one cut into 10, not three
