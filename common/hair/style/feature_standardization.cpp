@@ -35,6 +35,13 @@ std::vector<double> feature_log_offsets(std::span<const std::string> names,
   return offsets;
 }
 
+void check_log_offsets(std::span<const double> log_offsets, const std::string& who) {
+  for (double offset : log_offsets)
+    if (!(offset >= 0) || !std::isfinite(offset))
+      throw Error::usage(who + ": a log offset of " + std::to_string(offset) +
+                         " (must be 0 or positive, and finite)");
+}
+
 namespace {
 
 /// `rows` with every column of positive log offset c taken to log(max(x, 0) + c): lengths,
@@ -58,10 +65,7 @@ FeatureStandardization feature_standardization(const Eigen::MatrixXd& original_r
     if (log_offsets.size() != static_cast<size_t>(original_rows.cols()))
       throw Error::usage("feature standardisation: " + std::to_string(log_offsets.size()) +
                          " log offsets for " + std::to_string(original_rows.cols()) + " features");
-    for (double offset : log_offsets)
-      if (!(offset >= 0) || !std::isfinite(offset))
-        throw Error::usage("feature standardisation: a log offset of " + std::to_string(offset) +
-                           " (must be 0 or positive, and finite)");
+    check_log_offsets(log_offsets, "feature standardisation");
     result.log_offset = Eigen::Map<const Eigen::VectorXd>(
         log_offsets.data(), static_cast<Eigen::Index>(log_offsets.size()));
   }

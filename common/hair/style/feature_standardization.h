@@ -44,6 +44,10 @@ inline constexpr double kCountLogOffset = 1;
 std::vector<double> feature_log_offsets(std::span<const std::string> names,
                                         double length_offset_h = kLengthLogOffsetH);
 
+/// Throws hair::Error (usage), "`who`: a log offset of ... (must be 0 or positive, and
+/// finite)", for the first offset of `log_offsets` that is negative or not finite.
+void check_log_offsets(std::span<const double> log_offsets, const std::string& who);
+
 /// Throws hair::Error (bad input) for the first NaN or infinite value of `rows` (n x d),
 /// naming its row and feature: "feature row 12, column 3 (long_length_h): NaN".
 /// `feature_names`: d names, or empty (the column number alone).

@@ -1,9 +1,9 @@
 #include "hair/style/style_classifier_params.h"
 
-#include <cmath>
 #include <string>
 
 #include "hair/core/error.h"
+#include "hair/style/feature_standardization.h"
 
 namespace hair {
 
@@ -31,10 +31,7 @@ void StyleClassifierParams::check() const {
     throw Error::usage("style classifier: inner_folds = " + std::to_string(inner_folds) +
                        " (the grid search needs at least 2)");
   check_puk_svm_grid(svm_grid);
-  for (double offset : feature_log_offsets)
-    if (!(offset >= 0) || !std::isfinite(offset))
-      throw Error::usage("style classifier: a feature log offset of " + std::to_string(offset) +
-                         " (must be 0 or positive, and finite)");
+  check_log_offsets(feature_log_offsets, "style classifier: feature_log_offsets");
   check_random_forest_params(forest);
   if (default_classifier != StyleClassifierKind::svm &&
       default_classifier != StyleClassifierKind::random_forest)

@@ -192,6 +192,23 @@ TEST_F(StyleModelTest, TrainedOnAllRows) {
   EXPECT_GT(forest_correct, 90);
 }
 
+/// Expects `a` and `b` to predict every row of `rows` alike; returns how many rows `a`'s SVM
+/// gives `labels`.
+int expect_same_predictions(const StyleModel& a, const StyleModel& b, const LabelledRows& rows) {
+  int correct = 0;
+  for (Eigen::Index row = 0; row < rows.features.rows(); ++row) {
+    Eigen::VectorXd values = rows.features.row(row).transpose();
+    StylePrediction first = style_prediction(a, {values.data(), 3});
+    StylePrediction second = style_prediction(b, {values.data(), 3});
+    EXPECT_EQ(first.svm_label, second.svm_label);
+    EXPECT_EQ(first.svm_decision_values, second.svm_decision_values);
+    EXPECT_EQ(first.forest_label, second.forest_label);
+    EXPECT_EQ(first.forest_vote_fraction, second.forest_vote_fraction);
+    correct += first.svm_label == rows.labels[static_cast<size_t>(row)];
+  }
+  return correct;
+}
+
 TEST_F(StyleModelTest, FileRoundTripPredictsTheSame) {
   std::filesystem::path path = directory_ / "model.yml";
   write_style_model(path, model_);
@@ -206,16 +223,7 @@ TEST_F(StyleModelTest, FileRoundTripPredictsTheSame) {
   EXPECT_EQ(read.svm.support_vectors, model_.svm.support_vectors);
   EXPECT_EQ(style_model_text(read), style_model_text(model_));
 
-  LabelledRows probe = four_blobs(25, 2.5, 36);  // rows the model has not seen
-  for (Eigen::Index row = 0; row < probe.features.rows(); ++row) {
-    Eigen::VectorXd values = probe.features.row(row).transpose();
-    StylePrediction a = style_prediction(model_, {values.data(), 3});
-    StylePrediction b = style_prediction(read, {values.data(), 3});
-    EXPECT_EQ(a.svm_label, b.svm_label);
-    EXPECT_EQ(a.svm_decision_values, b.svm_decision_values);
-    EXPECT_EQ(a.forest_label, b.forest_label);
-    EXPECT_EQ(a.forest_vote_fraction, b.forest_vote_fraction);
-  }
+  expect_same_predictions(model_, read, four_blobs(25, 2.5, 36));  // rows it has not seen
   std::string text = style_model_text(model_);
   EXPECT_TRUE(contains(text, "format: \"hairstyle.style_model\""));
   EXPECT_TRUE(contains(text, "version: 2"));
@@ -238,16 +246,8 @@ TEST_F(StyleModelTest, FileRoundTripKeepsTheLogScale) {
   const StyleModel read = read_style_model(path, kNames);
   EXPECT_EQ(read.standardization.log_offset, model.standardization.log_offset);
   EXPECT_EQ(read.standardization.mean, model.standardization.mean);
-  int correct = 0;
-  for (Eigen::Index row = 0; row < data.features.rows(); ++row) {
-    Eigen::VectorXd values = data.features.row(row).transpose();
-    StylePrediction a = style_prediction(model, {values.data(), 3});
-    StylePrediction b = style_prediction(read, {values.data(), 3});
-    EXPECT_EQ(a.svm_decision_values, b.svm_decision_values);
-    EXPECT_EQ(a.forest_label, b.forest_label);
-    correct += a.svm_label == data.labels[static_cast<size_t>(row)];
-  }
-  EXPECT_GT(correct, 90);  // the blobs stay apart on the log scale of their first column
+  EXPECT_GT(expect_same_predictions(model, read, data),
+            90);  // the blobs stay apart on the log scale of their first column
   // A negative log offset in the file is refused.
   std::string text = style_model_text(model);
   const size_t at = text.find("log_offset: [ ");
