@@ -112,6 +112,9 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["tube_sides"] = c.tube_sides;
     item["cap_volume_m"] = c.cap_volume_m;
     item["cap_drape"] = c.cap_drape;
+    item["braid_lift_m"] = c.braid_lift_m;
+    item["braid_tip_width_share"] = c.braid_tip_width_share;
+    item["braid_cards_per_lobe"] = c.braid_cards_per_lobe;
     json["components"].push_back(item);
   }
   const DefectSpec& d = spec.defects;
@@ -183,15 +186,35 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
     for (size_t i = 0; i < json["components"].size(); ++i) {
       const nlohmann::json& item = json["components"][i];
       std::string where = fmt::format("components[{}].", i);
-      require_known_keys(item, where, {"kind",           "stream_count",     "length_min_m",
-                                       "length_max_m",   "wave_amplitude_m", "wavelength_m",
-                                       "strip_width_m",  "azimuth_min_deg",  "azimuth_max_deg",
-                                       "polar_min_deg",  "polar_max_deg",    "band_azimuth_deg",
-                                       "band_polar_deg", "braid_width_m",    "braid_depth_m",
-                                       "braid_period_m", "band_gap_m",       "one_piece_rings",
-                                       "bun_radius_m",   "ringlet_radius_m", "ringlet_pitch_m",
-                                       "tube_sides",     "cap_volume_m",     "cap_drape",
-                                       "hang_volume_m"});
+      require_known_keys(item, where,
+                         {"kind",
+                          "stream_count",
+                          "length_min_m",
+                          "length_max_m",
+                          "wave_amplitude_m",
+                          "wavelength_m",
+                          "strip_width_m",
+                          "azimuth_min_deg",
+                          "azimuth_max_deg",
+                          "polar_min_deg",
+                          "polar_max_deg",
+                          "band_azimuth_deg",
+                          "band_polar_deg",
+                          "braid_width_m",
+                          "braid_depth_m",
+                          "braid_period_m",
+                          "band_gap_m",
+                          "one_piece_rings",
+                          "bun_radius_m",
+                          "ringlet_radius_m",
+                          "ringlet_pitch_m",
+                          "tube_sides",
+                          "cap_volume_m",
+                          "cap_drape",
+                          "hang_volume_m",
+                          "braid_lift_m",
+                          "braid_tip_width_share",
+                          "braid_cards_per_lobe"});
       ComponentSpec c;
       std::string kind = "normal";
       read_key(item, where, "kind", kind);
@@ -232,6 +255,9 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
       read_key(item, where, "cap_volume_m", c.cap_volume_m);
       read_key(item, where, "hang_volume_m", c.hang_volume_m);
       read_key(item, where, "cap_drape", c.cap_drape);
+      read_key(item, where, "braid_lift_m", c.braid_lift_m);
+      read_key(item, where, "braid_tip_width_share", c.braid_tip_width_share);
+      read_key(item, where, "braid_cards_per_lobe", c.braid_cards_per_lobe);
       spec.components.push_back(c);
     }
   }
@@ -295,6 +321,9 @@ void check_spec(const HairStyleSpec& spec) {
     require_range(where + "ringlet_pitch_m", c.ringlet_pitch_m, 0.005, 0.5);
     require_range(where + "cap_volume_m", c.cap_volume_m, 0, 0.1);
     require_range(where + "hang_volume_m", c.hang_volume_m, 0, 0.1);
+    require_range(where + "braid_lift_m", c.braid_lift_m, 0, 0.1);
+    require_range(where + "braid_tip_width_share", c.braid_tip_width_share, 0.1, 1.0);
+    require_range(where + "braid_cards_per_lobe", c.braid_cards_per_lobe, 1, 12);
     if (c.tube_sides != 0) require_range(where + "tube_sides", c.tube_sides, 3, 32);
   }
   const DefectSpec& d = spec.defects;

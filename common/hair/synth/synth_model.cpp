@@ -706,14 +706,19 @@ void add_ponytail(const ComponentSpec& component, int component_index, const Def
 
 /// A braid: three streams, each a cap grid from a third of the scalp region to the braid
 /// top (fixed), then many short pieces along a stream interleaving with the other two
+/// (each lobe woven from braid_cards_per_lobe such streams side by side, narrowing to
+/// braid_tip_width_share at the tip, its top braid_lift_m off the band point)
 /// around a hanging axis (braided): offsets a sin(wt + phi_k) across and b sin(2(wt +
 /// phi_k)) out of the braid, phi_k = 2 pi k / 3, the classic parametric three-strand braid.
 void add_braid(const ComponentSpec& component, int component_index, const DefectSpec& defects,
                const Head& head, Rng& rng, std::vector<Stream>& streams) {
-  auto [top, top_out] = band_point(head, component);
+  auto [band_top, top_out] = band_point(head, component);
+  const Vec3 top = band_top + component.braid_lift_m * top_out;
   double length = rng.uniform(component.length_min_m, component.length_max_m);
+  // A lifted braid leaves its top backwards, out from the head, before gravity bends it down.
+  const double start_down = component.braid_lift_m > 0 ? 0.3 : 0.8;
   std::vector<Vec3> axis =
-      grown_curve(head, top, (top_out + 0.8 * Vec3(0, -1, 0)).normalized(), length, 0.05,
+      grown_curve(head, top, (top_out + start_down * Vec3(0, -1, 0)).normalized(), length, 0.05,
                   defects.body_clearance_m + component.braid_depth_m);
   round_creases(head, axis, kBraidMinBendRadius_m,
                 defects.body_clearance_m + component.braid_depth_m);
@@ -731,56 +736,78 @@ void add_braid(const ComponentSpec& component, int component_index, const Defect
   }
   double sector = (component.azimuth_max_deg - component.azimuth_min_deg) / 3.0;
   double omega = 2 * kPi / component.braid_period_m;
+  // The braid's width at a share of the way from its top (1) to its tip
+  // (braid_tip_width_share).
+  auto braid_taper = [&](double share) {
+    return 1.0 - (1.0 - component.braid_tip_width_share) * std::clamp(share, 0.0, 1.0);
+  };
+  const int cards = std::max(1, component.braid_cards_per_lobe);
   for (int k = 0; k < 3; ++k) {
     double phase = 2 * kPi * k / 3.0;
-    std::vector<Vec3> braid_points, braid_out;
+    std::vector<Vec3> lobe, braid_out;
+    std::vector<double> lobe_taper;
     for (size_t i = 0; i < axis.size(); ++i) {
       double t = omega * axis_along[i] + phase;
-      braid_points.push_back(axis[i] + component.braid_width_m * std::sin(t) * axis_side[i] +
-                             component.braid_depth_m * std::sin(2 * t) * axis_out[i]);
+      double taper = braid_taper(axis_along[i] / std::max(axis_along.back(), 1e-9));
+      lobe.push_back(axis[i] + taper * (component.braid_width_m * std::sin(t) * axis_side[i] +
+                                        component.braid_depth_m * std::sin(2 * t) * axis_out[i]));
+      lobe_taper.push_back(taper);
       braid_out.push_back(axis_out[i]);
     }
-    double azimuth = component.azimuth_min_deg + sector * (k + 0.5);
-    double polar = std::min(component.polar_max_deg, hairline_polar_deg(azimuth)) - 8.0;
-    Vec3 root_dir = direction(azimuth, polar);
-    Stream stream;
-    stream.component = component_index;
-    stream.style = HairStyle::braided;
-    stream.points =
-        cap_curve(head, root_dir, braid_points.front(), defects.scalp_lift_m,
-                  defects.body_clearance_m, CapShape{component.cap_volume_m, component.cap_drape});
-    size_t cap_points = stream.points.size();
-    append_points(stream.points, braid_points);
-    measure_arc_length(stream);
-    double cap_length = stream.along_m[cap_points - 1];
-    // Cap points face out of the head; braid points face out of the braid.
-    std::vector<Vec3> facing;
-    for (size_t i = 0; i < stream.points.size(); ++i)
-      facing.push_back(i < cap_points
-                           ? head.radial(stream.points[i])
-                           : braid_out[std::min(i - cap_points + 1, braid_out.size() - 1)]);
-    frame_stream(stream, head, &facing);
-    double root_width = std::min(0.12, radians(sector) * head.radius_m * 0.8);
-    stream.width_m.resize(stream.points.size());
-    for (size_t i = 0; i < stream.points.size(); ++i) {
-      double s = stream.along_m[i];
-      stream.width_m[i] =
-          s < cap_length ? root_width + (component.strip_width_m - root_width) * (s / cap_length)
-                         : component.strip_width_m;
+    // The lobe's cards lie side by side across it, overlapping by half a strip width.
+    for (int card = 0; card < cards; ++card) {
+      const double card_offset = (card - 0.5 * (cards - 1)) * 0.5 * component.strip_width_m;
+      std::vector<Vec3> braid_points = lobe;
+      for (size_t i = 0; cards > 1 && i < lobe.size(); ++i) {
+        Vec3 tangent = (lobe[std::min(i + 1, lobe.size() - 1)] - lobe[i > 0 ? i - 1 : 0]);
+        Vec3 across = tangent.cross(axis_out[i]);
+        if (across.norm() > 1e-12)
+          braid_points[i] += card_offset * lobe_taper[i] * across.normalized();
+      }
+      double azimuth = component.azimuth_min_deg + sector * (k + (card + 0.5) / cards);
+      double polar = std::min(component.polar_max_deg, hairline_polar_deg(azimuth)) - 8.0;
+      Vec3 root_dir = direction(azimuth, polar);
+      Stream stream;
+      stream.component = component_index;
+      stream.style = HairStyle::braided;
+      stream.points = cap_curve(head, root_dir, braid_points.front(), defects.scalp_lift_m,
+                                defects.body_clearance_m,
+                                CapShape{component.cap_volume_m, component.cap_drape});
+      size_t cap_points = stream.points.size();
+      append_points(stream.points, braid_points);
+      measure_arc_length(stream);
+      double cap_length = stream.along_m[cap_points - 1];
+      // Cap points face out of the head; braid points face out of the braid.
+      std::vector<Vec3> facing;
+      for (size_t i = 0; i < stream.points.size(); ++i)
+        facing.push_back(i < cap_points
+                             ? head.radial(stream.points[i])
+                             : braid_out[std::min(i - cap_points + 1, braid_out.size() - 1)]);
+      frame_stream(stream, head, &facing);
+      double root_width = std::min(0.12, radians(sector / cards) * head.radius_m * 0.8);
+      stream.width_m.resize(stream.points.size());
+      for (size_t i = 0; i < stream.points.size(); ++i) {
+        double s = stream.along_m[i];
+        stream.width_m[i] =
+            s < cap_length ? root_width + (component.strip_width_m - root_width) * (s / cap_length)
+                           : component.strip_width_m *
+                                 braid_taper((s - cap_length) /
+                                             std::max(stream.length_m() - cap_length, 1e-9));
+      }
+      stream.trim_tips = false;
+      stream.pieces.push_back(Piece{0.0, cap_length, HairStyle::fixed, defects.cap_rails});
+      double braid_begin = cap_length + component.band_gap_m;
+      int count = std::max(
+          1, static_cast<int>((stream.length_m() - braid_begin) / defects.braid_piece_length_m));
+      DefectSpec braid_defects = defects;
+      braid_defects.segment_length_m =
+          std::min(defects.segment_length_m, defects.braid_piece_length_m / 4);
+      auto pieces =
+          cut_pieces(braid_begin, stream.length_m(), count, HairStyle::braided, braid_defects, rng);
+      for (Piece& piece : pieces) piece.rails = rng.integer(2, std::min(3, defects.rails_max));
+      stream.pieces.insert(stream.pieces.end(), pieces.begin(), pieces.end());
+      streams.push_back(std::move(stream));
     }
-    stream.trim_tips = false;
-    stream.pieces.push_back(Piece{0.0, cap_length, HairStyle::fixed, defects.cap_rails});
-    double braid_begin = cap_length + component.band_gap_m;
-    int count = std::max(
-        1, static_cast<int>((stream.length_m() - braid_begin) / defects.braid_piece_length_m));
-    DefectSpec braid_defects = defects;
-    braid_defects.segment_length_m =
-        std::min(defects.segment_length_m, defects.braid_piece_length_m / 4);
-    auto pieces =
-        cut_pieces(braid_begin, stream.length_m(), count, HairStyle::braided, braid_defects, rng);
-    for (Piece& piece : pieces) piece.rails = rng.integer(2, std::min(3, defects.rails_max));
-    stream.pieces.insert(stream.pieces.end(), pieces.begin(), pieces.end());
-    streams.push_back(std::move(stream));
   }
 }
 
@@ -1410,6 +1437,26 @@ HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed, bool artists_famili
     component.cap_volume_m = rng.uniform(0.015, 0.045);
     component.cap_drape = true;
   }
+  // Braids as artists make them (as braid01's), drawn last so every draw above stays as it
+  // was: where loose hair with volume gathers, the braid's top stands out by about that
+  // volume and the braid leaves it backwards; half the braids narrow down to the tie; half
+  // are woven from the cap's cards, 3-5 side by side in each lobe, cut into pieces of one or
+  // two crossings (5-10 cm), the lobes swinging wide enough to hold their cards.
+  bool woven_cards = false;
+  for (ComponentSpec& component : spec.components) {
+    if (component.kind != ComponentSpec::Kind::braid) continue;
+    if (component.cap_volume_m > 0)
+      component.braid_lift_m = component.cap_volume_m * rng.uniform(0.5, 1.0);
+    if (rng.chance(0.5)) component.braid_tip_width_share = rng.uniform(0.4, 0.7);
+    if (rng.chance(0.5)) {
+      component.braid_cards_per_lobe = rng.integer(3, 5);
+      double lobe_width_m = (component.braid_cards_per_lobe + 1) * 0.5 * component.strip_width_m;
+      component.braid_width_m = std::max(component.braid_width_m, 0.4 * lobe_width_m);
+      component.braid_depth_m = std::max(component.braid_depth_m, 0.2 * lobe_width_m);
+      woven_cards = true;
+    }
+  }
+  if (woven_cards) defects.braid_piece_length_m = rng.uniform(0.05, 0.1);
   return spec;
 }
 

@@ -85,6 +85,18 @@ struct ComponentSpec {
   /// swept off the face, before they turn back to the band.
   double cap_volume_m = 0.0;
   bool cap_drape = false;
+  /// Braid: its top stands this much farther off the head than a band's (0.012 m), where
+  /// loose hair drawn back with volume gathers, and the braid leaves it backwards before it
+  /// falls (braid01's braid starts 0.16 H off the skin, going back, not down).
+  double braid_lift_m = 0.0;
+  /// Braid: its width at the tip as a share of its width at the top (1: as wide all along);
+  /// below 1 the three streams and their strips narrow evenly down the braid to the tie, as
+  /// real braids do (braid01's ends at 0.59 of its widest).
+  double braid_tip_width_share = 1.0;
+  /// Braid: each of its three lobes woven from this many cards side by side (each its own
+  /// stream from its own root, overlapping the next by half), as braid01's lobes are woven
+  /// from the cap's cards; 1: one card a lobe.
+  int braid_cards_per_lobe = 1;
   /// Normal hair: above 0, each stream stands off the head by up to this much below its
   /// root, rising smoothly over the first 40% of its length and turning back in over the
   /// last 25%, as a bob's cards do (bob01 and bob02's rails lie 1-1.5 cm farther off the body from
@@ -166,7 +178,10 @@ HairStyleSpec preset(const std::string& name);
 /// miss (issue 26): a third of the short caps swept back from the forehead (as short04),
 /// half the braids hanging to the waist (as braid01's), half the tails and braids gathered
 /// from the whole head drawn back low and loose over the ears with volume (as braid01's
-/// cap: cap_volume_m, cap_drape). The training corpus (corpus_plan
+/// cap: cap_volume_m, cap_drape), the braids among them lifted off the head by that volume
+/// (braid_lift_m), half the braids narrowing to the tie (braid_tip_width_share) and half
+/// woven from the cap's cards (braid_cards_per_lobe, longer braid pieces). The
+/// training corpus (corpus_plan
 /// with_painted) draws them; without, the presets' varied models, and the tests measured
 /// on them, stay as they were.
 HairStyleSpec varied_spec(HairStyleSpec spec, uint32_t seed, bool artists_families = false);

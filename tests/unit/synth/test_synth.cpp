@@ -233,6 +233,7 @@ TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamili
   EXPECT_FALSE(in_training_corpus("bob"));
   EXPECT_TRUE(in_training_corpus("ringlets"));
   int swept_back = 0, waist_long = 0, braids = 0, caps = 0, loose = 0, gathered = 0;
+  int lifted = 0, tapered = 0, woven = 0;
   for (size_t i = 0; i < painted.size(); ++i) {
     const CorpusEntry& entry = painted[i];
     HairStyleSpec varied = varied_spec(preset(entry.preset), entry.seed);
@@ -262,6 +263,23 @@ TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamili
         ++gathered;
       if (drawn.kind == ComponentSpec::Kind::braid) {
         ++braids;
+        // Lifted only where loose hair with volume gathers into it, by at most that volume.
+        if (drawn.braid_lift_m > 0) {
+          ++lifted;
+          EXPECT_GT(drawn.cap_volume_m, 0);
+          EXPECT_LE(drawn.braid_lift_m, drawn.cap_volume_m);
+        }
+        if (drawn.braid_tip_width_share < 1) {
+          ++tapered;
+          EXPECT_GE(drawn.braid_tip_width_share, 0.4);
+          EXPECT_LE(drawn.braid_tip_width_share, 0.7);
+        }
+        if (drawn.braid_cards_per_lobe > 1) {
+          ++woven;
+          EXPECT_GE(drawn.braid_cards_per_lobe, 3);
+          EXPECT_LE(drawn.braid_cards_per_lobe, 5);
+          EXPECT_GE(entry.spec.defects.braid_piece_length_m, 0.05);
+        }
         double ratio = drawn.length_max_m / base.length_max_m;
         if (ratio > 1.0) {
           ++waist_long;
@@ -285,6 +303,12 @@ TEST(SynthPresets, ThePaintedCorpusCyclesEighteenPresetsAndDrawsTheArtistsFamili
   EXPECT_LT(waist_long, braids);
   EXPECT_GE(loose, 1);
   EXPECT_LT(loose, gathered);
+  std::printf("[ synth    ] of its %d braids: %d lifted, %d narrowing, %d woven from cards\n",
+              braids, lifted, tapered, woven);
+  for (int family : {lifted, tapered, woven}) {
+    EXPECT_GE(family, 1);
+    EXPECT_LT(family, braids);
+  }
 }
 
 /// Hair lying on the head (short_cap): one grid per stream, short and root-free, lying
@@ -340,6 +364,132 @@ TEST(SynthBraid, AxesAndStreamsHaveNoCreaseOverTheShoulders) {
       EXPECT_LT(largest_turn_deg(axis, 1, 0), 8.0) << "seed " << seed << " braid " << b / 3;
     }
   }
+}
+
+/// The point of `model`'s stream `s` centre at arc length `along_m` (clamped to its ends).
+Eigen::Vector3d stream_point_at(const SynthModel& model, int64_t s, double along_m) {
+  const StrandSet& centres = model.stream_centres;
+  double walked = 0;
+  for (int64_t p = centres.offsets[s] + 1; p < centres.offsets[s + 1]; ++p) {
+    Eigen::Vector3d a = centres.points.row(p - 1).cast<double>().transpose(),
+                    b = centres.points.row(p).cast<double>().transpose();
+    double step = (b - a).norm();
+    if (walked + step >= along_m && step > 0) return a + (b - a) * ((along_m - walked) / step);
+    walked += step;
+  }
+  return centres.points.row(centres.offsets[s + 1] - 1).cast<double>().transpose();
+}
+
+/// A braid's streams and where each one's braid begins and ends along its centre (its
+/// braided patches).
+struct BraidPart {
+  std::vector<int64_t> stream;
+  std::vector<double> begin_m, end_m;
+};
+BraidPart braid_part(const SynthModel& model) {
+  std::map<int64_t, std::pair<double, double>> range;
+  for (const SynthPatch& patch : model.patches) {
+    if (patch.style != HairStyle::braided) continue;
+    auto [it, added] = range.try_emplace(patch.stream, patch.start_m, patch.end_m);
+    if (!added)
+      it->second = {std::min(it->second.first, patch.start_m),
+                    std::max(it->second.second, patch.end_m)};
+  }
+  BraidPart part;
+  for (const auto& [stream, span] : range) {
+    part.stream.push_back(stream);
+    part.begin_m.push_back(span.first);
+    part.end_m.push_back(span.second);
+  }
+  return part;
+}
+
+/// The braid's width at `share` of the way down its braided part: the largest distance
+/// between two of its streams' centres there.
+double braid_width_at(const SynthModel& model, const BraidPart& part, double share) {
+  std::vector<Eigen::Vector3d> points;
+  for (size_t k = 0; k < part.stream.size(); ++k)
+    points.push_back(stream_point_at(model, part.stream[k],
+                                     part.begin_m[k] + share * (part.end_m[k] - part.begin_m[k])));
+  double widest = 0;
+  for (size_t a = 0; a < points.size(); ++a)
+    for (size_t b = a + 1; b < points.size(); ++b)
+      widest = std::max(widest, (points[a] - points[b]).norm());
+  return widest;
+}
+
+// Braids as artists make them (braid01's, issue 26): the lobes woven from several of the
+// cap's cards, the top standing off the head where loose hair gathers, the braid narrowing
+// to its tie. Each against the preset's braid of the same seed.
+TEST(SynthBraid, WovenFromCardsLiftedOffTheHeadAndNarrowingToTheTie) {
+  Triangles3i triangles = fan_triangulation(body_m().face_offsets, body_m().face_vertices);
+  TriangleMeshDistance body(body_m().vertices, triangles);
+  const uint32_t seed = 3;
+  HairStyleSpec plain = preset("braid"), woven = plain, lifted = plain, tapered = plain;
+  woven.components[0].braid_cards_per_lobe = 4;
+  lifted.components[0].braid_lift_m = 0.03;
+  tapered.components[0].braid_tip_width_share = 0.5;
+  const SynthModel plain_model = generate_model(plain, body_m(), seed, 2);
+  const BraidPart plain_braid = braid_part(plain_model);
+  ASSERT_EQ(plain_braid.stream.size(), 3u);
+
+  // Woven: four cards a lobe, each its own stream from its own root; extract reads every
+  // piece as one group, as on the preset (at least 65% root to tip, above).
+  const SynthModel woven_model = generate_model(woven, body_m(), seed, 2);
+  EXPECT_EQ(braid_part(woven_model).stream.size(), 12u);
+  {
+    std::filesystem::path obj = std::filesystem::temp_directory_path() / "hair_synth_woven.obj";
+    std::FILE* file = std::fopen(obj.c_str(), "wb");
+    ASSERT_NE(file, nullptr);
+    std::string text = obj_text(woven_model, 0.1);
+    std::fwrite(text.data(), 1, text.size(), file);
+    std::fclose(file);
+    PolyMesh hair = read_mesh(obj);
+    std::filesystem::remove(obj);
+    PolyMesh body_dm = body_m();
+    body_dm.vertices *= 10.0f;
+    ExtractParams params;
+    params.unit_scale = 0.1;
+    ExtractResult result = extract_strands(hair, body_dm, params, obj.string(), "body.obj");
+    ASSERT_EQ(result.group_count(), static_cast<int32_t>(woven_model.patches.size()));
+    std::vector<int32_t> group_patch = group_patches(woven_model, result);
+    std::vector<GroupOrientation> orientation =
+        group_orientations(woven_model, result, group_patch);
+    int agreeing = 0;
+    for (GroupOrientation verdict : orientation) agreeing += static_cast<int>(verdict) == 0;
+    std::printf("[ synth    ] woven braid: %zu patches, %.3f root to tip\n",
+                woven_model.patches.size(), static_cast<double>(agreeing) / result.group_count());
+    EXPECT_GE(static_cast<double>(agreeing) / result.group_count(), 0.65);
+  }
+
+  // Lifted: the braid's top stands off the body by about the lift more than the preset's.
+  auto top_off_body_m = [&](const SynthModel& model) {
+    const BraidPart part = braid_part(model);
+    double sum = 0;
+    for (size_t k = 0; k < part.stream.size(); ++k)
+      sum += body.distance(stream_point_at(model, part.stream[k], part.begin_m[k]));
+    return sum / static_cast<double>(part.stream.size());
+  };
+  const double plain_top_m = top_off_body_m(plain_model);
+  const double lifted_top_m = top_off_body_m(generate_model(lifted, body_m(), seed, 2));
+
+  // Tapered: as wide as the preset's at the top, about half as wide near the tip.
+  const SynthModel tapered_model = generate_model(tapered, body_m(), seed, 2);
+  const BraidPart tapered_braid = braid_part(tapered_model);
+  double top_ratio = 0, tip_ratio = 0;
+  for (double share : {0.05, 0.1, 0.15})
+    top_ratio += braid_width_at(tapered_model, tapered_braid, share) /
+                 braid_width_at(plain_model, plain_braid, share) / 3;
+  for (double share : {0.85, 0.9, 0.95})
+    tip_ratio += braid_width_at(tapered_model, tapered_braid, share) /
+                 braid_width_at(plain_model, plain_braid, share) / 3;
+  std::printf(
+      "[ synth    ] braid top %.3f m off the body, lifted 3 cm: %.3f m; tapered to 0.5: width "
+      "%.2f of the preset's at the top, %.2f near the tip\n",
+      plain_top_m, lifted_top_m, top_ratio, tip_ratio);
+  EXPECT_GT(lifted_top_m - plain_top_m, 0.02);
+  EXPECT_GT(top_ratio, 0.85);
+  EXPECT_LT(tip_ratio, 0.7);
 }
 
 TEST(SynthShortCap, GridsLieOnTheScalpFromTheCrownDownToTheHairline) {
@@ -431,6 +581,21 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   EXPECT_TRUE(spec_from_json(json).components[0].cap_drape);
   json["components"][0]["cap_volume_m"] = 0.2;
   EXPECT_THROW(spec_from_json(json), hair::Error);
+  // A braid as artists make them: lift, taper and cards a lobe round-trip, within range.
+  json = spec_json(preset("braid"));
+  EXPECT_EQ(json["components"][0]["braid_cards_per_lobe"], 1);
+  json["components"][0]["braid_lift_m"] = 0.02;
+  json["components"][0]["braid_tip_width_share"] = 0.5;
+  json["components"][0]["braid_cards_per_lobe"] = 4;
+  EXPECT_EQ(spec_from_json(json).components[0].braid_lift_m, 0.02);
+  EXPECT_EQ(spec_from_json(json).components[0].braid_tip_width_share, 0.5);
+  EXPECT_EQ(spec_from_json(json).components[0].braid_cards_per_lobe, 4);
+  for (const auto& [key, value] : std::vector<std::pair<std::string, double>>{
+           {"braid_lift_m", -0.01}, {"braid_tip_width_share", 0.0}, {"braid_cards_per_lobe", 0}}) {
+    json = spec_json(preset("braid"));
+    json["components"][0][key] = value;
+    EXPECT_THROW(spec_from_json(json), hair::Error) << key;
+  }
   // A bob's volume round-trips and stays within 10 cm.
   json = spec_json(preset("bob"));
   EXPECT_EQ(json["components"][0]["hang_volume_m"], 0.012);
