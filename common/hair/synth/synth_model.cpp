@@ -704,12 +704,26 @@ void add_ponytail(const ComponentSpec& component, int component_index, const Def
   }
 }
 
+/// `lobe` moved across itself by `offset_m` times its taper at each point: a card beside the
+/// lobe's centre. Across is perpendicular to the lobe and to the braid's outward direction.
+std::vector<Vec3> card_beside_lobe(const std::vector<Vec3>& lobe, const std::vector<Vec3>& out,
+                                   const std::vector<double>& taper, double offset_m) {
+  std::vector<Vec3> card = lobe;
+  for (size_t i = 0; offset_m != 0 && i < lobe.size(); ++i) {
+    Vec3 tangent = lobe[std::min(i + 1, lobe.size() - 1)] - lobe[i > 0 ? i - 1 : 0];
+    Vec3 across = tangent.cross(out[i]);
+    if (across.norm() > 1e-12) card[i] += offset_m * taper[i] * across.normalized();
+  }
+  return card;
+}
+
 /// A braid: three streams, each a cap grid from a third of the scalp region to the braid
 /// top (fixed), then many short pieces along a stream interleaving with the other two
-/// (each lobe woven from braid_cards_per_lobe such streams side by side, narrowing to
-/// braid_tip_width_share at the tip, its top braid_lift_m off the band point)
 /// around a hanging axis (braided): offsets a sin(wt + phi_k) across and b sin(2(wt +
 /// phi_k)) out of the braid, phi_k = 2 pi k / 3, the classic parametric three-strand braid.
+/// As artists make braids: each lobe woven from braid_cards_per_lobe such streams side by
+/// side, the braid narrowing to braid_tip_width_share at its tip, its top braid_lift_m
+/// farther off the head than the band point.
 void add_braid(const ComponentSpec& component, int component_index, const DefectSpec& defects,
                const Head& head, Rng& rng, std::vector<Stream>& streams) {
   auto [band_top, top_out] = band_point(head, component);
@@ -757,13 +771,7 @@ void add_braid(const ComponentSpec& component, int component_index, const Defect
     // The lobe's cards lie side by side across it, overlapping by half a strip width.
     for (int card = 0; card < cards; ++card) {
       const double card_offset = (card - 0.5 * (cards - 1)) * 0.5 * component.strip_width_m;
-      std::vector<Vec3> braid_points = lobe;
-      for (size_t i = 0; cards > 1 && i < lobe.size(); ++i) {
-        Vec3 tangent = (lobe[std::min(i + 1, lobe.size() - 1)] - lobe[i > 0 ? i - 1 : 0]);
-        Vec3 across = tangent.cross(axis_out[i]);
-        if (across.norm() > 1e-12)
-          braid_points[i] += card_offset * lobe_taper[i] * across.normalized();
-      }
+      std::vector<Vec3> braid_points = card_beside_lobe(lobe, axis_out, lobe_taper, card_offset);
       double azimuth = component.azimuth_min_deg + sector * (k + (card + 0.5) / cards);
       double polar = std::min(component.polar_max_deg, hairline_polar_deg(azimuth)) - 8.0;
       Vec3 root_dir = direction(azimuth, polar);
