@@ -14,7 +14,9 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hair/grow/grow_io.h"
@@ -460,6 +462,25 @@ StrandsByTruth strands_by_truth(const SampleOutputs& out, const fs::path& truth_
   return result;
 }
 
+/// hair-synth's model of `spec` at seed 7101 (not one of the training corpus's, 1000-1089
+/// and 2000-2089), written as `name`.obj beside its truth into `work`/`name`.data, then
+/// through the pipeline to strands.h5 (in `work`/`name`): the outputs and the truth file.
+/// Throws std::runtime_error with hair-synth's message when it fails.
+std::pair<SampleOutputs, fs::path> unseen_model(const fs::path& work,
+                                                const hair::synth::HairStyleSpec& spec,
+                                                const std::string& name) {
+  const fs::path data = work / (name + ".data");
+  fs::create_directories(data);
+  hair::test::write_text_file(data / "spec.json", hair::synth::spec_json(spec).dump(2));
+  auto synth =
+      run_command(kBin / "hair-synth",
+                  {"--spec", (data / "spec.json").string(), "--seed", "7101", "--name", name, "-o",
+                   data.string(), "--body", (kSamples / "body.obj").string(), "--reproducible"});
+  if (synth.exit_code != 0) throw std::runtime_error("hair-synth: " + synth.err);
+  return {hair::test::run_sample_pipeline(work / name, data / (name + ".obj"), 10000),
+          data / (name + ".truth.h5")};
+}
+
 TEST_F(ClassifyCli, ThePaintedPresetsGetTheStylesTheirTruthSays) {
   // The kinds of community meshes (hair-synth's painted presets) with a seed the shipped
   // model was not trained on (the corpus's are 1000-1089 and 2000-2089): a bun and the
@@ -503,21 +524,12 @@ TEST_F(ClassifyCli, ALooseLowTailsCapIsFixed) {
   // band, fixed, on at least 80% of its strands (96.7% at this seed with the models of
   // 2026-11-27, 100% with those before; 96-100% at seeds
   // 7101-7104). Its thin tail is not asked: grow ends most cap strands at the band.
-  const fs::path data = directory() / "loose";
-  fs::create_directories(data);
   hair::synth::HairStyleSpec spec = hair::synth::varied_spec(hair::synth::preset("low_tail"), 7101);
   spec.components[0].cap_volume_m = 0.03;
   spec.components[0].cap_drape = true;
   spec.components[0].band_polar_deg = 100;
-  hair::test::write_text_file(data / "spec.json", hair::synth::spec_json(spec).dump(2));
-  auto synth =
-      run_command(kBin / "hair-synth", {"--spec", (data / "spec.json").string(), "--seed", "7101",
-                                        "--name", "loose_low_tail", "-o", data.string(), "--body",
-                                        (kSamples / "body.obj").string(), "--reproducible"});
-  ASSERT_EQ(synth.exit_code, 0) << synth.err;
-  SampleOutputs out = hair::test::run_sample_pipeline(directory() / "loose_low_tail",
-                                                      data / "loose_low_tail.obj", 10000);
-  StrandsByTruth found = strands_by_truth(out, data / "loose_low_tail.truth.h5", styles(out));
+  const auto [out, truth] = unseen_model(directory().path(), spec, "loose_low_tail");
+  StrandsByTruth found = strands_by_truth(out, truth, styles(out));
   const double share = found.share_right(static_cast<int>(hair::HairStyle::fixed));
   std::printf("[ loose    ] low_tail, loose: fixed clusters %.1f%% right (%lld strands)\n",
               100 * share,
@@ -532,8 +544,6 @@ TEST_F(ClassifyCli, AWovenBraidFromALooseCapIsBraidedUnderAFixedCap) {
   // trained on. The braid is braided and the cap fixed, each on at least 80% of its
   // strands (both classified so at seeds 7101-7103, loose or close, with the models of
   // session 15; session 14's called this braid normal, as they called braid01's held out).
-  const fs::path data = directory() / "woven";
-  fs::create_directories(data);
   hair::synth::HairStyleSpec spec = hair::synth::varied_spec(hair::synth::preset("braid"), 7101);
   hair::synth::ComponentSpec& braid = spec.components[0];
   braid.braid_cards_per_lobe = 4;
@@ -542,15 +552,8 @@ TEST_F(ClassifyCli, AWovenBraidFromALooseCapIsBraidedUnderAFixedCap) {
   braid.cap_drape = true;
   braid.band_polar_deg = 100;
   braid.braid_lift_m = 0.02;
-  hair::test::write_text_file(data / "spec.json", hair::synth::spec_json(spec).dump(2));
-  auto synth =
-      run_command(kBin / "hair-synth", {"--spec", (data / "spec.json").string(), "--seed", "7101",
-                                        "--name", "woven_braid", "-o", data.string(), "--body",
-                                        (kSamples / "body.obj").string(), "--reproducible"});
-  ASSERT_EQ(synth.exit_code, 0) << synth.err;
-  SampleOutputs out =
-      hair::test::run_sample_pipeline(directory() / "woven_braid", data / "woven_braid.obj", 10000);
-  StrandsByTruth found = strands_by_truth(out, data / "woven_braid.truth.h5", styles(out));
+  const auto [out, truth] = unseen_model(directory().path(), spec, "woven_braid");
+  StrandsByTruth found = strands_by_truth(out, truth, styles(out));
   for (hair::HairStyle style : {hair::HairStyle::braided, hair::HairStyle::fixed}) {
     const double share = found.share_right(static_cast<int>(style));
     std::printf("[ woven    ] braid from a loose cap: %s clusters %.1f%% right (%lld strands)\n",

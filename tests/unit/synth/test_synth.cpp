@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <numbers>
 #include <set>
+#include <stdexcept>
 
 #include "hair/core/error.h"
 #include "hair/extract/extract.h"
@@ -29,6 +31,24 @@ const PolyMesh& body_m() {
     return mesh;
   }();
   return body;
+}
+
+/// `model` as extract reads it: through the OBJ text hair-synth writes (decimetres), in a
+/// temporary file named `stem`.obj, on the body in decimetres too.
+ExtractResult extract_through_obj(const SynthModel& model, const std::string& stem) {
+  const std::filesystem::path obj = std::filesystem::temp_directory_path() / (stem + ".obj");
+  {
+    std::ofstream file(obj, std::ios::binary);
+    if (!file) throw std::runtime_error("cannot write " + obj.string());
+    file << obj_text(model, 0.1);
+  }
+  PolyMesh hair = read_mesh(obj);
+  std::filesystem::remove(obj);
+  PolyMesh body = body_m();
+  body.vertices *= 10.0f;
+  ExtractParams params;
+  params.unit_scale = 0.1;
+  return extract_strands(hair, body, params, obj.string(), "body.obj");
 }
 
 class SynthPreset : public ::testing::TestWithParam<std::string> {};
@@ -130,23 +150,8 @@ TEST_P(SynthPreset, ExtractFindsEveryPatchOrientedAsTheTruthSays) {
   for (uint32_t seed : {1u, 2u, 3u}) {
     SynthModel model = generate_model(varied_spec(preset(GetParam()), seed), body_m(), seed);
     // Through the OBJ text as hair-synth writes it, in decimetres.
-    std::filesystem::path obj =
-        std::filesystem::temp_directory_path() /
-        ("hair_synth_test_" + GetParam() + "_" + std::to_string(seed) + ".obj");
-    {
-      std::FILE* file = std::fopen(obj.c_str(), "wb");
-      ASSERT_NE(file, nullptr);
-      std::string text = obj_text(model, 0.1);
-      std::fwrite(text.data(), 1, text.size(), file);
-      std::fclose(file);
-    }
-    PolyMesh hair = read_mesh(obj);
-    std::filesystem::remove(obj);
-    PolyMesh body = body_m();
-    body.vertices *= 10.0f;
-    ExtractParams params;
-    params.unit_scale = 0.1;
-    ExtractResult result = extract_strands(hair, body, params, obj.string(), "body.obj");
+    ExtractResult result =
+        extract_through_obj(model, "hair_synth_test_" + GetParam() + "_" + std::to_string(seed));
     ASSERT_EQ(result.group_count(), static_cast<int32_t>(model.patches.size()))
         << GetParam() << " seed " << seed;
 
@@ -438,19 +443,7 @@ TEST(SynthBraid, WovenFromCardsLiftedOffTheHeadAndNarrowingToTheTie) {
   const SynthModel woven_model = generate_model(woven, body_m(), seed, 2);
   EXPECT_EQ(braid_part(woven_model).stream.size(), 12u);
   {
-    std::filesystem::path obj = std::filesystem::temp_directory_path() / "hair_synth_woven.obj";
-    std::FILE* file = std::fopen(obj.c_str(), "wb");
-    ASSERT_NE(file, nullptr);
-    std::string text = obj_text(woven_model, 0.1);
-    std::fwrite(text.data(), 1, text.size(), file);
-    std::fclose(file);
-    PolyMesh hair = read_mesh(obj);
-    std::filesystem::remove(obj);
-    PolyMesh body_dm = body_m();
-    body_dm.vertices *= 10.0f;
-    ExtractParams params;
-    params.unit_scale = 0.1;
-    ExtractResult result = extract_strands(hair, body_dm, params, obj.string(), "body.obj");
+    ExtractResult result = extract_through_obj(woven_model, "hair_synth_woven");
     ASSERT_EQ(result.group_count(), static_cast<int32_t>(woven_model.patches.size()));
     std::vector<int32_t> group_patch = group_patches(woven_model, result);
     std::vector<GroupOrientation> orientation =
