@@ -79,6 +79,12 @@ int main(int argc, char** argv) {
         hair::ParamRange::at_least(0));
   p.add("follow_pull", params.follow_pull, "...by at most this share of a step per step (0: never)",
         hair::ParamRange::closed(0, 1));
+  p.add("follow_card_keep_h", params.follow_card_keep_h,
+        "...and towards the surface of its own card (the group's faces) beyond this, in H "
+        "(0: no such hold)",
+        hair::ParamRange::at_least(0));
+  p.add("follow_card_pull", params.follow_card_pull,
+        "...by at most this share of a step per step (0: never)", hair::ParamRange::closed(0, 1));
   p.add("body_clearance_h", params.body_clearance_h,
         "grown points are kept this far outside the body, in H", hair::ParamRange::at_least(0));
   p.add("body_voxel_h", params.body_voxel_h, "spacing of the body's signed distance field, in H",

@@ -4,6 +4,7 @@
 #include "hair/cluster/typeify_io.h"
 #include "hair/core/error.h"
 #include "hair/extract/extract_io.h"
+#include "hair/grow/card_surfaces.h"
 #include "hair/h5/attribute.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
@@ -24,6 +25,15 @@ GrowInput read_grow_input(const h5::File& extract, const h5::File& types,
   input.body_vertices = std::move(body.vertices);
   input.body_triangles = std::move(body.triangles);
   input.scalp_triangle = std::move(body.scalp_triangle);
+  // The hair mesh, fanned into triangles, each with its face's group.
+  input.hair_vertices = h5::read_matrix<float, 3>(extract, "/mesh/vertices");
+  const auto face_offsets = h5::read_vector<int64_t>(extract, "/mesh/face_offsets");
+  const auto face_group = h5::read_vector<int32_t>(extract, "/mesh/face_group");
+  if (face_offsets.empty() || face_group.size() != face_offsets.size() - 1)
+    throw Error::bad_dataset(extract.name(), "/mesh/face_group", "is not one group per face");
+  fan_triangulation_with_groups(face_offsets,
+                                h5::read_vector<int32_t>(extract, "/mesh/face_vertices"),
+                                face_group, input.hair_triangles, input.hair_triangle_group);
   auto group_count = extracted.group_first_strand.size() - 1;
 
   TypedGroups typed = read_typed_groups(types);

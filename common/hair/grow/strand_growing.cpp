@@ -16,6 +16,7 @@
 #include "hair/geom/body_sdf.h"
 #include "hair/geom/point_index.h"
 #include "hair/geom/triangle_mesh_distance.h"
+#include "hair/grow/card_surfaces.h"
 #include "hair/grow/orientation_field.h"
 #include "hair/grow/surface_sampling.h"
 
@@ -182,6 +183,12 @@ class GrowingContext {
             body_distance_->distance(point_of(strands.points, row));
     }
 
+    // Each group's own faces, for the hold on its card's surface.
+    if (params.follow_card_keep_h > 0 && input.hair_triangles.rows() > 0)
+      card_surfaces_ =
+          CardSurfaces(input.hair_vertices, input.hair_triangles, input.hair_triangle_group,
+                       static_cast<int64_t>(group_strands_.size()));
+
     // Arc length from each point to its strand's tip.
     length_to_tip_m_.assign(static_cast<size_t>(strands.point_count()), 0.0);
     for (int64_t s = 0; s < strand_count; ++s)
@@ -230,6 +237,7 @@ class GrowingContext {
   int32_t strand_of_point(int64_t row) const { return point_strand_[static_cast<size_t>(row)]; }
 
   bool layered() const { return body_distance_ != nullptr; }
+  const CardSurfaces& card_surfaces() const { return card_surfaces_; }
   const TriangleMeshDistance& body_distance() const { return *body_distance_; }
   /// Height above the body of the input strand through `row`, `length_m` further along it
   /// towards its tip (its tip's height beyond it); `cursor` (a row of the same strand, at
@@ -454,6 +462,7 @@ class GrowingContext {
   std::vector<uint8_t> cluster_feeds_continuation_;  ///< per cluster: one of its groups does
   std::vector<double> length_to_tip_m_;
   std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
+  CardSurfaces card_surfaces_;  ///< empty without follow_card_keep_h or the hair mesh
   std::vector<double> height_m_;                         ///< per input point, with layers
   bool any_type_roots_ = false;
 };
@@ -502,6 +511,7 @@ class StrandGrower {
         clearance_m_(params_.body_clearance_h * context.input().head_height_m),
         lost_m_(params_.follow_radius_h * context.input().head_height_m),
         keep_m_(params_.follow_keep_h * context.input().head_height_m),
+        card_keep_m_(params_.follow_card_keep_h * context.input().head_height_m),
         cluster_(root_cluster) {}
 
   /// The strand from `root`; `reference_row` is the input-strand point nearest it.
@@ -666,9 +676,27 @@ class StrandGrower {
       if (towards.squaredNorm() > 0)
         next += towards.normalized() * std::min(excess_m, params_.follow_pull * step_m_);
     }
+    next = onto_card(next);
     add_point(next, GrowRule::input_strand, cluster_, group_);
     if (ran_into_body(point, direction_)) return std::nullopt;
     return true;
+  }
+
+  /// `next` drawn back towards the surface of the card followed where it lies farther
+  /// than follow_card_keep_h from it, across the strand's direction only, by at most
+  /// follow_card_pull steps.
+  Vec3 onto_card(const Vec3& next) const {
+    if (!(card_keep_m_ > 0) || !(params_.follow_card_pull > 0)) return next;
+    const std::optional<TriangleMeshDistance::Nearest> card =
+        context_.card_surfaces().nearest(group_, next);
+    if (!card || !(card->distance > card_keep_m_)) return next;
+    Vec3 towards = card->closest_point - next;
+    towards -= towards.dot(direction_) * direction_;
+    const double norm_m = towards.norm();
+    if (!(norm_m > 0)) return next;
+    return next + towards / norm_m *
+                      std::min({card->distance - card_keep_m_, norm_m,
+                                params_.follow_card_pull * step_m_});
   }
 
   /// At the end of the field or of an input strand: the next strand, bridged to; else the
@@ -756,7 +784,7 @@ class StrandGrower {
   const OrientationField* field_;
   const BodySdf& body_;
   const int32_t root_cluster_;
-  const double step_m_, clearance_m_, lost_m_, keep_m_;
+  const double step_m_, clearance_m_, lost_m_, keep_m_, card_keep_m_;
   GrowingStrand strand_;
   Vec3 direction_ = Vec3::Zero();  ///< of the last step
   std::vector<int32_t> visited_;   ///< groups followed or entered

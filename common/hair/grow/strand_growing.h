@@ -92,6 +92,14 @@ struct GrowParams {
   /// offset it entered with).
   double follow_keep_h = 0.02;
   double follow_pull = 0.5;
+  /// Where the input gives the hair mesh's faces (GrowInput::hair_triangles), a strand
+  /// following a group also drifts back towards the nearest point of that group's own
+  /// faces (its card's surface) where it lies farther than follow_card_keep_h from them,
+  /// by at most follow_card_pull steps per step, across its direction only: a strand
+  /// over a card comes down onto it and keeps its place across the card's width, so the
+  /// strands of a card lie spread over it. 0: no such hold.
+  double follow_card_keep_h = 0.001;
+  double follow_card_pull = 0.25;
   /// Grown points are kept this far outside the body (its signed distance field).
   double body_clearance_h = 0.004;
   double body_voxel_h = 0.01;  ///< spacing of the body's signed distance field
@@ -122,6 +130,11 @@ struct GrowInput {
   Points3f body_vertices;
   Triangles3i body_triangles;
   std::vector<uint8_t> scalp_triangle;  ///< per body triangle
+  /// The hair mesh as triangles, with each triangle's group (extract.h5 /mesh, faces
+  /// fanned); empty when not given (GrowParams::follow_card_keep_h then does nothing).
+  Points3f hair_vertices;
+  Triangles3i hair_triangles;
+  std::vector<int32_t> hair_triangle_group;
   double head_height_m = 0;
   std::string source;  ///< names the input in errors
 };

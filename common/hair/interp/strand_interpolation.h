@@ -51,7 +51,7 @@ struct InterpolationParams {
   /// braid) run right up to the braid, their last stretch is bridged instead of held, so
   /// the braid's top moving against the head spreads over it rather than tearing one
   /// segment (docs/interpolate.md).
-  double wisp_bridge_length_m = 0.06;
+  double wisp_bridge_length_m = 0.08;
   /// Where a braided strand passes from one wisp tetrahedron to the next, its points
   /// within this arc length of the seam move partly with the other tetrahedron too (half
   /// at the seam, none at this distance), so that two tetrahedra turning apart bend the

@@ -21,6 +21,7 @@
 
 #include "hair/core/error.h"
 #include "hair/geom/triangle_mesh_distance.h"
+#include "hair/grow/card_surfaces.h"
 #include "hair/grow/strand_growing.h"
 #include "unit/icosphere.h"
 
@@ -745,6 +746,79 @@ TEST(StrandGrowing, StrandsFollowingAGroupDriftBackToItsRails) {
       1e3 * with_pull, 1e3 * without);
   EXPECT_LT(with_pull, 0.02 * kHeadHeight);
   EXPECT_LT(with_pull, without);
+}
+
+/// The scene's cards as faces: quads between neighbouring rails of each card (their
+/// group), over the rails' own points; the middle and the tip have no faces.
+void add_card_faces(GrowInput& input) {
+  const StrandSet& rails = input.input_strands;
+  input.hair_vertices = rails.points;
+  std::vector<int64_t> face_offsets{0};
+  std::vector<int32_t> face_vertices, face_group;
+  for (int card = 0; card < kCardCount; ++card)
+    for (int k = 0; k + 1 < kRailsPerCard; ++k) {
+      const int64_t a = rails.offsets[card * kRailsPerCard + k];
+      const int64_t b = rails.offsets[card * kRailsPerCard + k + 1];
+      for (int i = 0; i + 1 < kRailPoints; ++i) {
+        for (int64_t v : {a + i, a + i + 1, b + i + 1, b + i})
+          face_vertices.push_back(static_cast<int32_t>(v));
+        face_offsets.push_back(static_cast<int64_t>(face_vertices.size()));
+        face_group.push_back(card);
+      }
+    }
+  fan_triangulation_with_groups(face_offsets, face_vertices, face_group, input.hair_triangles,
+                                input.hair_triangle_group);
+}
+
+TEST(StrandGrowing, StrandsFollowingACardLieOnItsSurfaceSpreadAcrossIt) {
+  Scene scene = make_scene();
+  add_card_faces(scene.input);
+  // The cards lie on the sphere kCardOffset outside the head: a point's distance from
+  // that sphere is its distance from the card's surface.
+  struct OnCards {
+    double mean_off_surface_m = 0, lateral_spread_m = 0;
+    int64_t points = 0;
+  };
+  auto on_cards = [&](const GrowParams& params) {
+    GrowResult result = grow_strands(scene.input, params);
+    const auto& group = std::get<std::vector<int32_t>>(result.strands.point_attributes.at("group"));
+    OnCards found;
+    double lateral_sum = 0, lateral_squares = 0;
+    for (int64_t row = 0; row < result.strands.point_count(); ++row) {
+      const int32_t card = group[static_cast<size_t>(row)];
+      if (result.point_rule[static_cast<size_t>(row)] != GrowRule::input_strand || card < 0 ||
+          card >= kCardCount)
+        continue;
+      const Vec3 p = point_of(result.strands.points, row);
+      found.mean_off_surface_m += std::abs((p - kCentre).norm() - (kRadius + kCardOffset));
+      const double lateral = lateral_in_card(card, p);
+      lateral_sum += lateral;
+      lateral_squares += lateral * lateral;
+      ++found.points;
+    }
+    const auto n = static_cast<double>(std::max<int64_t>(found.points, 1));
+    found.mean_off_surface_m /= n;
+    found.lateral_spread_m =
+        std::sqrt(std::max(0.0, lateral_squares / n - (lateral_sum / n) * (lateral_sum / n)));
+    return found;
+  };
+  GrowParams held = params_with(kStrandCount);
+  GrowParams free = held;
+  free.follow_card_keep_h = 0;
+  const OnCards with_hold = on_cards(held), without = on_cards(free);
+  std::printf(
+      "[ grow     ] sphere: along the cards %.2f mm off their surface with the hold, %.2f mm "
+      "without; spread across them (standard deviation) %.1f mm and %.1f mm (rails +-%.0f "
+      "mm)\n",
+      1e3 * with_hold.mean_off_surface_m, 1e3 * without.mean_off_surface_m,
+      1e3 * with_hold.lateral_spread_m, 1e3 * without.lateral_spread_m, 1e3 * kOuterRail);
+  EXPECT_GT(with_hold.points, 200);
+  EXPECT_LT(with_hold.mean_off_surface_m, 0.5 * without.mean_off_surface_m);
+  EXPECT_LT(with_hold.mean_off_surface_m, 2 * held.follow_card_keep_h * kHeadHeight);
+  // On the surface, not gathered onto the rails or the card's middle: strands spread
+  // across the card at least as widely as hair spread evenly over it would (the standard
+  // deviation of a uniform spread over +-kOuterRail).
+  EXPECT_GT(with_hold.lateral_spread_m, kOuterRail / std::sqrt(3.0));
 }
 
 TEST(StrandGrowing, StrandsAlongInputStrandsThroughTheBodyArePushedOut) {

@@ -488,7 +488,7 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
   // bound to a third wisp tetrahedron), as grow makes of a cap feeding a braid. The
   // braid's top then swings: the tetrahedron turns 0.5 rad about Z and moves 3 cm, the
   // head still. Held right up to the braid (wisp_bridge_length_m 0), the segment across
-  // the junction tears; bridged over the last 6 cm of the cap, the move spreads over it.
+  // the junction tears; bridged over the last 8 cm of the cap, the move spreads over it.
   Scene scene = make_scene();
   std::vector<Vec3> points;
   std::vector<int32_t> clusters;
@@ -523,10 +523,10 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
   interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, torn);
   const double torn_stretch = largest_stretch(scene, torn, s);
 
-  binding = bind_strands(scene.strands, scene.guides, {});  // the default: 6 cm
+  binding = bind_strands(scene.strands, scene.guides, {});  // the default: 8 cm
   EXPECT_EQ(binding.method[static_cast<size_t>(s)], InterpolationMethod::braided);
   EXPECT_EQ(binding.bridged[static_cast<size_t>(s)], 1);
-  // Held up to the first point that leaves at least 6 cm of bridge to the braid.
+  // Held up to the first point that leaves at least 8 cm of bridge to the braid.
   const int64_t held = binding.held_count[static_cast<size_t>(s)];
   const double bridge_m = 0.005 * static_cast<double>(20 - (held - 1));
   EXPECT_GE(bridge_m, InterpolationParams{}.wisp_bridge_length_m - 1e-6);

@@ -18,6 +18,7 @@
 #include "hair/cluster/typeify.h"
 #include "hair/extract/extract.h"
 #include "hair/geom/point_index.h"
+#include "hair/grow/card_surfaces.h"
 #include "hair/grow/strand_growing.h"
 #include "hair/mesh/mesh_io.h"
 #include "hair/synth/synth_eval.h"
@@ -278,6 +279,10 @@ Grown grow_model(const SynthModel& model, const PolyMesh& body, const std::strin
   input.body_vertices = std::move(extract.body_vertices);
   input.body_triangles = std::move(extract.body_triangles);
   input.scalp_triangle = std::move(extract.scalp_triangle);
+  input.hair_vertices = extract.hair_mesh.vertices;
+  fan_triangulation_with_groups(extract.hair_mesh.face_offsets, extract.hair_mesh.face_vertices,
+                                extract.face_group, input.hair_triangles,
+                                input.hair_triangle_group);
   input.head_height_m = h;
   input.source = name;
   GrowParams params;
