@@ -21,6 +21,7 @@
 #include "hair/style/decisive_style_rules.h"
 #include "hair/style/hair_style.h"
 #include "hair/style/repeated_cross_validation.h"
+#include "hair/style/repeated_model_holdout.h"
 #include "hair/style/stratified_folds.h"
 #include "hair/style/style_classifier.h"
 #include "hair/style/style_cross_validation.h"
@@ -213,8 +214,9 @@ int main(int argc, char** argv) {
   int repeats = 1;
   app.add_option("--repeats", repeats,
                  "--report: repeat the cross-validation with the fold seeds SEED, SEED + 1, ...; "
-                 "the report gives the mean accuracy, its spread and every repeat's, then the "
-                 "first repeat in full")
+                 "--holdout-report: repeat the leave-one-model-out evaluation with those seeds "
+                 "(the classifiers' grid-search folds and forests); each report gives the mean "
+                 "accuracy, its spread and every repeat's, then the first repeat in full")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
   bool linear_features = false;
@@ -365,9 +367,10 @@ int main(int argc, char** argv) {
           decided = hair::decisive_styles_of_rows(table.rows, table.feature_names, rules);
           fixed_ruled_out = hair::fixed_ruled_out_of_rows(table.rows, table.feature_names, rules);
         }
-        hair::ModelHoldout holdout =
-            hair::leave_one_model_out(table.rows, int_labels(table), table.model, real, strands,
-                                      params_of(table), decided, fixed_ruled_out);
+        const hair::RepeatedModelHoldout repeated = hair::repeated_leave_one_model_out(
+            table.rows, int_labels(table), table.model, real, strands, params_of(table), repeats,
+            decided, fixed_ruled_out);
+        const hair::ModelHoldout& holdout = repeated.repeats.front();
         double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - holdout_start).count();
         int ruled = static_cast<int>(std::count(holdout.ruled.begin(), holdout.ruled.end(), 1));
@@ -385,11 +388,25 @@ int main(int argc, char** argv) {
                                      ruled, holdout.truth.size(),
                                      std::count(holdout.fixed_ruled_out.begin(),
                                                 holdout.fixed_ruled_out.end(), 1))) +
+                  (repeats > 1 ? hair::repeated_model_holdout_markdown(repeated) +
+                                     fmt::format("\nThe first of them (seed {}):\n\n",
+                                                 repeated.seeds.front())
+                               : std::string()) +
                   hair::model_holdout_markdown(holdout, table.cluster) + "\n" +
-                  fmt::format("Both classifiers, grid search included: {:.1f} s.\n", seconds);
+                  fmt::format("Both classifiers, grid search included{}: {:.1f} s.\n",
+                              repeats > 1 ? ", every repeat" : "", seconds);
+        std::vector<double> svm_accuracies, forest_accuracies;
+        for (const hair::ModelHoldout& each : repeated.repeats) {
+          svm_accuracies.push_back(each.svm_scores.accuracy());
+          forest_accuracies.push_back(each.forest_scores.accuracy());
+        }
+        const hair::AccuracySpread svm = hair::accuracy_spread(svm_accuracies);
+        const hair::AccuracySpread forest = hair::accuracy_spread(forest_accuracies);
         spdlog::info(
-            "{} features, real meshes held out: SVM {:.1f}%, random forest {:.1f}% of strands", set,
-            100 * holdout.svm_scores.accuracy(), 100 * holdout.forest_scores.accuracy());
+            "{} features, real meshes held out: SVM {:.1f}% (sd {:.1f} over {} repeats), random "
+            "forest {:.1f}% (sd {:.1f}) of strands",
+            set, 100 * svm.mean, 100 * svm.standard_deviation, repeats, 100 * forest.mean,
+            100 * forest.standard_deviation);
       }
       write_text(holdout_path, report);
     }
