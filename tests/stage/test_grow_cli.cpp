@@ -340,6 +340,13 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
        "min_typed_root_scalp_share"},
       {{extract, types, clusters, "--gather_along_field_h", "-0.5"}, "gather_along_field_h"},
       {{extract, types, clusters, "--gather_along_field_h", "nan"}, "gather_along_field_h"},
+      {{hair::test::copy_with_nan(braid.extract, directory / "nan_mesh.h5", "/mesh/vertices")
+            .string(),
+        types, clusters},
+       "/mesh/vertices: expected finite values"},
+      {{extract, types, clusters, "--follow_card_keep_h", "-0.001"}, "follow_card_keep_h"},
+      {{extract, types, clusters, "--follow_card_keep_h", "nan"}, "follow_card_keep_h"},
+      {{extract, types, clusters, "--follow_card_pull", "1.5"}, "follow_card_pull"},
       {{extract, types}, "CLUSTERS_H5"},
   };
   hair::test::expect_clean_failures(kBin / "grow", "grow", cases, directory / "failures",
