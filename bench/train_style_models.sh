@@ -3,8 +3,8 @@
 # The synthetic corpus (hair-synth corpus --painted --count 90, seeds 1 and 2: 180 models,
 # ten of each of the 18 presets) and the ten MakeHuman meshes go through Makefile.pipeline
 # up to strands.h5, then hair-train-style writes the feature tables, the leave-one-model-out
-# report on the real meshes (the headline, repeated with ten seeds of the classifiers'
-# grid-search folds and forests), the cross-validation reports (folds of
+# report on the real meshes (the headline, repeated with ten seeds of the SVM's
+# grid-search folds), the cross-validation reports (folds of
 # clusters, the paper's and our features' also repeated with ten draws of folds, and
 # folds of models) and models/style_{paper,extended}.yml (docs/classify.md).
 #

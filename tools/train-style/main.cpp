@@ -215,7 +215,7 @@ int main(int argc, char** argv) {
   app.add_option("--repeats", repeats,
                  "--report: repeat the cross-validation with the fold seeds SEED, SEED + 1, ...; "
                  "--holdout-report: repeat the leave-one-model-out evaluation with those seeds "
-                 "(the classifiers' grid-search folds and forests); each report gives the mean "
+                 "(the SVM's grid-search folds); each report gives the mean "
                  "accuracy, its spread and every repeat's, then the first repeat in full")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();

@@ -58,8 +58,8 @@ std::string repeated_model_holdout_markdown(const RepeatedModelHoldout& result) 
     forest.push_back(repeat.forest_scores.accuracy());
   }
   std::string text = fmt::format(
-      "{} leave-one-model-out evaluations, the classifiers' grid-search folds and forests "
-      "drawn with seeds {} to {} (strands right in %; standard deviation in points):\n\n"
+      "{} leave-one-model-out evaluations, the SVM's grid-search folds drawn with seeds {} to "
+      "{} (strands right in %; standard deviation in points):\n\n"
       "| classifier | mean | sd | least | largest | each |\n|---|---:|---:|---:|---:|---|\n",
       result.repeats.size(), result.seeds.front(), result.seeds.back());
   for (const auto& [name, shares] :

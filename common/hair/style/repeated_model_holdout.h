@@ -9,10 +9,10 @@
 
 namespace hair {
 
-/// Leave-one-model-out evaluations of one table, each with its own seed: the
-/// classifiers' inner grid-search folds and forests are drawn afresh, the held-out models
-/// and the training rows are the same. How much the real meshes' figure owes to that draw
-/// (a cluster far from every training row can go either way).
+/// Leave-one-model-out evaluations of one table, each with its own seed: the SVM's inner
+/// grid-search folds are drawn afresh; the held-out models, the training rows and the
+/// forests' own seed (RandomForestParams::seed) are the same. How much the real meshes' figure owes
+/// to that draw (a cluster far from every training row can go either way).
 struct RepeatedModelHoldout {
   std::vector<uint64_t> seeds;        ///< per repeat
   std::vector<ModelHoldout> repeats;  ///< per repeat, as leave_one_model_out()
