@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace hair::test {
@@ -57,6 +58,29 @@ inline LabelledRows four_blobs(int per_class, double spread, uint64_t seed, doub
   Eigen::RowVectorXd scale(3);
   scale << 1.0, 1000.0, 0.001;
   return gaussian_blobs(centres, {0, 1, 2, 3}, per_class, spread, scale, seed);
+}
+
+/// Rows of several models for the leave-one-model-out tests: features and labels, each
+/// row's model, whether that model is a real mesh (held out) and its strands (weight).
+struct ModelCorpus {
+  LabelledRows data;
+  std::vector<std::string> model;
+  std::vector<bool> real;
+  std::vector<double> strands;
+};
+
+/// four_blobs(per_class, spread, seed) as the synthetic rows of `models` models
+/// ("synth_0", ...; row r in model r % models), 100 strands each; add the real models'
+/// rows after.
+inline ModelCorpus synthetic_model_corpus(int per_class, double spread, uint64_t seed, int models) {
+  ModelCorpus corpus;
+  corpus.data = four_blobs(per_class, spread, seed);
+  for (size_t row = 0; row < corpus.data.labels.size(); ++row) {
+    corpus.model.push_back("synth_" + std::to_string(row % static_cast<size_t>(models)));
+    corpus.real.push_back(false);
+    corpus.strands.push_back(100);
+  }
+  return corpus;
 }
 
 }  // namespace hair::test

@@ -25,21 +25,10 @@ bool contains(const std::string& text, const std::string& part) {
 /// Four blobs over six synthetic models; real model "clear" drawn in class 2's blob and
 /// labelled 2, real model "between" halfway between the blobs of classes 0 and 1 and
 /// labelled 1, where the classifiers' draws decide.
-struct Corpus {
-  test::LabelledRows data;
-  std::vector<std::string> model;
-  std::vector<bool> real;
-  std::vector<double> strands;
-};
+using Corpus = test::ModelCorpus;
 
 Corpus corpus_with_a_clear_and_an_unclear_model() {
-  Corpus corpus;
-  corpus.data = test::four_blobs(20, 0.6, 7);
-  for (size_t row = 0; row < corpus.data.labels.size(); ++row) {
-    corpus.model.push_back("synth_" + std::to_string(row % 6));
-    corpus.real.push_back(false);
-    corpus.strands.push_back(100);
-  }
+  Corpus corpus = test::synthetic_model_corpus(20, 0.6, 7, 6);
   const test::LabelledRows drawn = test::four_blobs(6, 0.6, 8);
   Eigen::Index n = corpus.data.features.rows();
   for (Eigen::Index r = 0; r < drawn.features.rows(); ++r) {

@@ -42,21 +42,10 @@ TEST(WeightedStyleScores, WeighEachRowByItsStrands) {
 /// Four well separated classes drawn for several synthetic models, and one "real" model
 /// whose rows lie in class 0's blob but are labelled 1. Classifiers that had seen those
 /// rows (the same points, repeated) would learn them; held out, they must be called 0.
-struct Corpus {
-  test::LabelledRows data;
-  std::vector<std::string> model;
-  std::vector<bool> real;
-  std::vector<double> strands;
-};
+using Corpus = test::ModelCorpus;
 
 Corpus corpus_with_a_contrary_real_model() {
-  Corpus corpus;
-  corpus.data = test::four_blobs(24, 0.5, 41);
-  for (size_t row = 0; row < corpus.data.labels.size(); ++row) {
-    corpus.model.push_back("synth_" + std::to_string(row % 6));
-    corpus.real.push_back(false);
-    corpus.strands.push_back(100);
-  }
+  Corpus corpus = test::synthetic_model_corpus(24, 0.5, 41, 6);
   // Two real models drawn from the blobs of classes 1-3, labelled truly (class 0's blob
   // is where the contrary model lies: that model, in their training, may sway it).
   test::LabelledRows drawn = test::four_blobs(4, 0.5, 42);
