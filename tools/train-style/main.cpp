@@ -162,6 +162,20 @@ void write_text(const fs::path& path, const std::string& text) {
   output.commit();
 }
 
+/// The spread of the SVM's and of the forest's accuracy over `repeats`; `accuracies` gives
+/// a repeat's pair (SVM, forest).
+template <class Repeat, class Accuracies>
+std::pair<hair::AccuracySpread, hair::AccuracySpread> spreads(const std::vector<Repeat>& repeats,
+                                                              Accuracies accuracies) {
+  std::vector<double> svm, forest;
+  for (const Repeat& repeat : repeats) {
+    const auto [svm_accuracy, forest_accuracy] = accuracies(repeat);
+    svm.push_back(svm_accuracy);
+    forest.push_back(forest_accuracy);
+  }
+  return {hair::accuracy_spread(svm), hair::accuracy_spread(forest)};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -328,13 +342,9 @@ int main(int argc, char** argv) {
                       "Cross-validation{} of both classifiers, grid search included: "
                       "{:.1f} s.\n",
                       repeats > 1 ? "s" : "", seconds);
-        std::vector<double> svm_accuracies, forest_accuracies;
-        for (const hair::StyleCrossValidation& each : repeated.repeats) {
-          svm_accuracies.push_back(each.svm.accuracy());
-          forest_accuracies.push_back(each.forest.accuracy());
-        }
-        const hair::AccuracySpread svm = hair::accuracy_spread(svm_accuracies);
-        const hair::AccuracySpread forest = hair::accuracy_spread(forest_accuracies);
+        const auto [svm, forest] = spreads(repeated.repeats, [](const auto& each) {
+          return std::pair{each.svm.accuracy(), each.forest.accuracy()};
+        });
         spdlog::info(
             "{} features: SVM {:.1f}% (sd {:.1f} over {} repeats), random forest {:.1f}% (sd "
             "{:.1f}); first repeat's real meshes {:.1f}%, {:.1f}%",
@@ -395,13 +405,9 @@ int main(int argc, char** argv) {
                   hair::model_holdout_markdown(holdout, table.cluster) + "\n" +
                   fmt::format("Both classifiers, grid search included{}: {:.1f} s.\n",
                               repeats > 1 ? ", every repeat" : "", seconds);
-        std::vector<double> svm_accuracies, forest_accuracies;
-        for (const hair::ModelHoldout& each : repeated.repeats) {
-          svm_accuracies.push_back(each.svm_scores.accuracy());
-          forest_accuracies.push_back(each.forest_scores.accuracy());
-        }
-        const hair::AccuracySpread svm = hair::accuracy_spread(svm_accuracies);
-        const hair::AccuracySpread forest = hair::accuracy_spread(forest_accuracies);
+        const auto [svm, forest] = spreads(repeated.repeats, [](const auto& each) {
+          return std::pair{each.svm_scores.accuracy(), each.forest_scores.accuracy()};
+        });
         spdlog::info(
             "{} features, real meshes held out: SVM {:.1f}% (sd {:.1f} over {} repeats), random "
             "forest {:.1f}% (sd {:.1f}) of strands",

@@ -25,19 +25,26 @@ AccuracySpread accuracy_spread(std::span<const double> accuracies) {
   return spread;
 }
 
+std::vector<StyleClassifierParams> seeded_repeats(const StyleClassifierParams& params, int repeats,
+                                                  std::string_view what) {
+  if (repeats < 1)
+    throw Error::usage(std::string(what) + ": " + std::to_string(repeats) +
+                       " repeats (need at least 1)");
+  std::vector<StyleClassifierParams> settings(static_cast<size_t>(repeats), params);
+  for (int r = 0; r < repeats; ++r)
+    settings[static_cast<size_t>(r)].seed = params.seed + static_cast<uint64_t>(r);
+  return settings;
+}
+
 RepeatedCrossValidation repeated_style_cross_validation(const Eigen::MatrixXd& features,
                                                         std::span<const int32_t> labels,
                                                         const std::vector<bool>& subset,
                                                         const StyleClassifierParams& params,
                                                         int repeats,
                                                         const FoldsForSeed& folds_for_seed) {
-  if (repeats < 1)
-    throw Error::usage("repeated cross-validation: " + std::to_string(repeats) +
-                       " repeats (need at least 1)");
   RepeatedCrossValidation result;
-  for (int r = 0; r < repeats; ++r) {
-    StyleClassifierParams repeat_params = params;
-    repeat_params.seed = params.seed + static_cast<uint64_t>(r);
+  for (const StyleClassifierParams& repeat_params :
+       seeded_repeats(params, repeats, "repeated cross-validation")) {
     std::vector<int32_t> folds;
     if (folds_for_seed) folds = folds_for_seed(repeat_params.seed);
     result.seeds.push_back(repeat_params.seed);

@@ -35,6 +35,12 @@ struct AccuracySpread {
 };
 AccuracySpread accuracy_spread(std::span<const double> accuracies);
 
+/// The settings of `repeats` repeats: copies of `params` whose seed is params.seed + r for
+/// r = 0, 1, ... (the first is `params` itself). Throws hair::Error (usage), naming `what`,
+/// for repeats < 1.
+std::vector<StyleClassifierParams> seeded_repeats(const StyleClassifierParams& params, int repeats,
+                                                  std::string_view what);
+
 /// Folds for a repeat drawn with `seed` (e.g. grouped_folds(models, folds, seed)); empty
 /// function: stratified folds of the labels, as style_cross_validation() draws them.
 using FoldsForSeed = std::function<std::vector<int32_t>(uint64_t seed)>;

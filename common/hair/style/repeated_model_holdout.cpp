@@ -15,13 +15,9 @@ RepeatedModelHoldout repeated_leave_one_model_out(
     const std::vector<std::string>& model_of_row, const std::vector<bool>& held_out,
     std::span<const double> weight, const StyleClassifierParams& params, int repeats,
     std::span<const int32_t> decided, std::span<const uint8_t> fixed_ruled_out) {
-  if (repeats < 1)
-    throw Error::usage("repeated leave-one-model-out: " + std::to_string(repeats) +
-                       " repeats (need at least 1)");
   RepeatedModelHoldout result;
-  for (int r = 0; r < repeats; ++r) {
-    StyleClassifierParams repeat_params = params;
-    repeat_params.seed = params.seed + static_cast<uint64_t>(r);
+  for (const StyleClassifierParams& repeat_params :
+       seeded_repeats(params, repeats, "repeated leave-one-model-out")) {
     result.seeds.push_back(repeat_params.seed);
     result.repeats.push_back(leave_one_model_out(features, labels, model_of_row, held_out, weight,
                                                  repeat_params, decided, fixed_ruled_out));
