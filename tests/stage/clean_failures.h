@@ -71,4 +71,26 @@ inline std::filesystem::path copy_with_nan(const std::filesystem::path& source,
   return copy;
 }
 
+/// A copy of the HDF5 file `source` at `copy` whose int32 vector dataset `path` lost its
+/// last `dropped` entries: a file whose arrays disagree in length, which the stages must
+/// refuse.
+inline std::filesystem::path copy_with_shorter_vector(const std::filesystem::path& source,
+                                                      const std::filesystem::path& copy,
+                                                      const char* path, size_t dropped) {
+  std::filesystem::copy_file(source, copy, std::filesystem::copy_options::overwrite_existing);
+  auto values = hair::h5::read_vector<int32_t>(hair::h5::File::open_read_only(source), path);
+  values.resize(values.size() > dropped ? values.size() - dropped : 0);
+  hid_t file = H5Fopen(copy.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  EXPECT_GE(H5Ldelete(file, path, H5P_DEFAULT), 0);
+  const hsize_t size = values.size();
+  hid_t space = H5Screate_simple(1, &size, nullptr);
+  hid_t dataset =
+      H5Dcreate2(file, path, H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  EXPECT_GE(H5Dwrite(dataset, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+  H5Dclose(dataset);
+  H5Sclose(space);
+  H5Fclose(file);
+  return copy;
+}
+
 }  // namespace hair::test

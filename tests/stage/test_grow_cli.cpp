@@ -344,6 +344,11 @@ TEST_F(GrowCli, WrongInputsFailCleanly) {
             .string(),
         types, clusters},
        "/mesh/vertices: expected finite values"},
+      {{hair::test::copy_with_shorter_vector(braid.extract, directory / "short_groups.h5",
+                                             "/mesh/face_group", 3)
+            .string(),
+        types, clusters},
+       "/mesh/face_group: expected shape"},
       {{extract, types, clusters, "--follow_card_keep_h", "-0.001"}, "follow_card_keep_h"},
       {{extract, types, clusters, "--follow_card_keep_h", "nan"}, "follow_card_keep_h"},
       {{extract, types, clusters, "--follow_card_pull", "1.5"}, "follow_card_pull"},
