@@ -580,7 +580,11 @@ class StrandGrower {
     double length_m = 0;
     Vec3 point = root;
     int64_t cursor = reference_row;
-    int steps_since_layer = 0;
+    // The layer's correction is looked up every kLayerEvery steps, from the first, and
+    // spread over the steps up to the next look-up: one step that jumped by all of it
+    // would climb from the scalp to the layer above at 50 degrees or more, across the hair.
+    int steps_since_layer = kLayerEvery - 1;
+    Vec3 layer_step = Vec3::Zero();
     while (!full()) {
       if (length_m + step_m_ > length_limit_m) return false;
       std::optional<Vec3> d1 = field_->direction(point);
@@ -589,9 +593,10 @@ class StrandGrower {
       if (!d2) break;
       Vec3 next = point + step_m_ * *d2;
       if (context_.layered() && ++steps_since_layer == kLayerEvery) {
-        next += towards_layer(next, reference_row, length_m + step_m_, cursor);
+        layer_step = towards_layer(next, reference_row, length_m + step_m_, cursor) / kLayerEvery;
         steps_since_layer = 0;
       }
+      next += layer_step;
       if (!field_->contains(next)) break;
       add_point(next, GrowRule::field, root_cluster_, -1);
       // The field runs into the body here: the input strands take over, as where the

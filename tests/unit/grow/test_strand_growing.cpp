@@ -643,11 +643,10 @@ TEST(StrandGrowing, CapStrandsWhoseCardEndsOnTheCapGoOnAlongTheFieldIntoTheTail)
   EXPECT_LT(ended, 0.2 * static_cast<double>(crown_off));
 }
 
-// Layers: card 0 gets an outer layer, its rails copied 14 mm above the sphere (the inner
-// ones lie 4 mm above it), a group of its own in the same cluster. With layers, the
-// strands rooted under the card split between the two heights; without, the field from
-// the scalp keeps them all low.
-TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
+// Layers: card 0 gets an outer layer, its rails copied kOuterHeight (14 mm) above the
+// sphere (the inner ones lie 4 mm above it), a group of its own in the same cluster.
+constexpr double kOuterHeight = 0.014;
+Scene make_layered_scene() {
   Scene scene = make_scene();
   GrowInput& input = scene.input;
   const StrandSet& inner = input.input_strands;
@@ -656,7 +655,6 @@ TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
   std::vector<int32_t> strand_group = group;
   for (int64_t s = 0; s < inner.strand_count(); ++s) polylines.push_back(inner.strand(s));
   const auto outer_group = static_cast<int32_t>(input.group_type.size());
-  constexpr double kOuterHeight = 0.014;
   for (int64_t s = 0; s < inner.strand_count(); ++s) {
     if (group[static_cast<size_t>(s)] != kContinuedCard) continue;
     Points3f rail = inner.strand(s);
@@ -672,6 +670,14 @@ TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
   input.input_strands.strand_attributes["group"] = strand_group;
   input.group_type.push_back(GroupType::root_free);
   input.group_cluster.push_back(input.group_cluster[kContinuedCard]);
+  return scene;
+}
+
+// With layers, the strands rooted under card 0 split between the two heights; without,
+// the field from the scalp keeps them all low.
+TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
+  Scene scene = make_layered_scene();
+  const GrowInput& input = scene.input;
 
   // Share of the strands rooted under card 0 whose points over the card's middle (polar
   // 50 to 80 degrees) lie above halfway between the layers, on average.
@@ -707,6 +713,43 @@ TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
   EXPECT_GT(with_layers, 0.25);
   EXPECT_LT(with_layers, 0.75);
   EXPECT_LT(without, 0.1);
+}
+
+// A strand rooted on the scalp under the outer layer climbs 10-14 mm to it along the
+// field. The climb is spread over the steps (layer_pull of a step each, about 27 degrees
+// off the scalp): no one step rises like a root hair standing up. (short01, whose cap
+// floats about 7 mm over the scalp: the third step of its field strands, where the climb
+// came all at once, ran along the paint 25% of the time, the next ones 90%.)
+TEST(StrandGrowing, StrandsClimbToTheirLayerOverSeveralSteps) {
+  Scene scene = make_layered_scene();
+  const GrowParams params = params_with(kStrandCount);
+  const GrowResult result = grow_strands(scene.input, params);
+  const StrandSet& grown = result.strands;
+  // Per field segment after the first (the root's own may leave the scalp steeply where the
+  // field does), its rise off the sphere's tangent plane, degrees.
+  std::vector<double> rise_deg;
+  double outer_height_max_m = 0;
+  for (int64_t s = 0; s < grown.strand_count(); ++s) {
+    if (!under_card(kContinuedCard, root_of(grown, s))) continue;
+    for (int64_t row = grown.offsets[s] + 2; row < grown.offsets[s + 1]; ++row) {
+      if (result.point_rule[static_cast<size_t>(row)] != GrowRule::field) continue;
+      const Vec3 a = point_of(grown.points, row - 1), b = point_of(grown.points, row);
+      const Vec3 radial = ((a + b) / 2 - kCentre).normalized();
+      const Vec3 segment = (b - a).normalized();
+      rise_deg.push_back(std::asin(std::abs(segment.dot(radial))) * 180 / std::numbers::pi);
+      outer_height_max_m = std::max(outer_height_max_m, height_above_sphere(b));
+    }
+  }
+  ASSERT_GT(rise_deg.size(), 200u);
+  std::sort(rise_deg.begin(), rise_deg.end());
+  const double p99 = rise_deg[rise_deg.size() * 99 / 100];
+  std::printf(
+      "[ grow     ] sphere, two layers over card 0: field segments rise off the scalp by "
+      "%.1f degrees at the median, %.1f at the 99th percentile, %.1f at most; highest "
+      "point %.1f mm\n",
+      rise_deg[rise_deg.size() / 2], p99, rise_deg.back(), 1000 * outer_height_max_m);
+  EXPECT_GT(outer_height_max_m, 0.009);  // some strands reach the outer layer
+  EXPECT_LT(p99, 35.0);
 }
 
 // A strand that follows a group off its rails (rooted beside a card, it leaves the field
