@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -399,6 +400,38 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
     listed += per_cluster[c];
   }
   EXPECT_EQ(listed, 2000);
+
+  // --by-rule: the segments "grown along flow" judges, by how each was grown; weighted by
+  // their counts, the three rules' shares along give that column's figure.
+  auto by_rule = run_command(
+      report, {braid.extract.string(), braid.strands.string(), "--name", "braid01", "--by-rule"});
+  EXPECT_EQ(by_rule.exit_code, 0) << by_rule.err;
+  std::vector<std::string> rule_lines = text_lines(by_rule.out);
+  ASSERT_EQ(rule_lines.size(), 9u) << by_rule.out;
+  auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream stream(line);
+    for (std::string cell; std::getline(stream, cell, '|');) {
+      cell.erase(0, cell.find_first_not_of(' '));
+      cell.erase(cell.find_last_not_of(' ') + 1);
+      out.push_back(cell);
+    }
+    return out;  // out[0] is the empty text before the first '|'
+  };
+  double judged = 0, along = 0;
+  for (const char* rule : {"along the field", "along input strands", "bridges between strands"}) {
+    const auto row_of_rule = std::find_if(rule_lines.begin(), rule_lines.end(), [&](const auto& l) {
+      return l.starts_with(std::string("| ") + rule + " |");
+    });
+    ASSERT_NE(row_of_rule, rule_lines.end()) << rule << "\n" << by_rule.out;
+    const std::vector<std::string> row_cells = cells(*row_of_rule);
+    const double count = std::stod(row_cells[2]);
+    judged += count;
+    if (row_cells[4] != "-") along += count * std::stod(row_cells[4]) / 100;
+  }
+  ASSERT_GT(judged, 0);
+  const std::vector<std::string> measures = cells(row_lines[0]);
+  EXPECT_NEAR(100 * along / judged, std::stod(measures[10]), 0.1) << by_rule.out << row_lines[0];
 
   auto missing =
       run_command(report, {braid.extract.string(), (directory() / "missing.h5").string()});

@@ -3,7 +3,8 @@
 // off the scalp, the worst patch's coverage, how the input and the grown strands follow the
 // painted flow (against the nearest face, and against the card each strand follows), and
 // the strands per cluster (docs/grow.md). Prints one Markdown table row,
-// or the header with --header; --clusters prints a table of the strands per cluster.
+// or the header with --header; --clusters prints a table of the strands per cluster,
+// --by-rule one of how the grown segments follow the flow by how each was grown.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include "hair/core/error.h"
 #include "hair/extract/extract_io.h"
 #include "hair/extract/painted_flow.h"
+#include "hair/grow/flow_by_rule.h"
 #include "hair/grow/followed_card_flow.h"
 #include "hair/grow/grow_io.h"
 #include "hair/grow/grow_measures.h"
@@ -42,16 +44,51 @@ std::string share_text(double share, int64_t judged) {
   return text;
 }
 
+/// A row of the --by-rule table: a tally, its share of `all_judged` and its share along.
+void print_tally_row(const char* what, const hair::FlowTally& tally, int64_t all_judged) {
+  std::printf("| %s | %lld | %s | %s |\n", what, static_cast<long long>(tally.judged),
+              share_text(static_cast<double>(tally.judged) /
+                             static_cast<double>(std::max<int64_t>(1, all_judged)),
+                         all_judged)
+                  .c_str(),
+              share_text(static_cast<double>(tally.along) /
+                             static_cast<double>(std::max<int64_t>(1, tally.judged)),
+                         tally.judged)
+                  .c_str());
+}
+
+/// The --by-rule table of `label`.
+void print_flow_by_rule(const std::string& label, const hair::FlowByRule& tally) {
+  int64_t all_judged = 0;
+  for (const hair::FlowTally& rule : tally.by_rule) all_judged += rule.judged;
+  std::printf(
+      "| %s: grown | segments judged | share of them | along the flow |\n"
+      "|---|---:|---:|---:|\n",
+      label.c_str());
+  print_tally_row("along the field", tally.by_rule[1], all_judged);
+  const char* steps[] = {"field, 1st step from the root", "field, 2nd step", "field, 3rd step",
+                         "field, later steps"};
+  for (size_t k = 0; k < tally.field_by_step.size(); ++k)
+    print_tally_row(steps[k], tally.field_by_step[k], all_judged);
+  print_tally_row("along input strands", tally.by_rule[2], all_judged);
+  print_tally_row("bridges between strands", tally.by_rule[3], all_judged);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app("Measure grown strands against the hair mesh and the body.", "hair-grow-report");
   std::string extract_path, strands_path, name;
   int samples = 20000;
-  bool header = false, clusters = false;
+  bool header = false, clusters = false, by_rule = false;
   app.add_flag("--header", header, "print the table's header and exit");
   app.add_flag("--clusters", clusters,
                "print a table of the strands per cluster instead of the measures");
+  app.add_flag("--by-rule", by_rule,
+               "print a table of how the grown segments run along the flow (as 'grown along "
+               "flow' judges them) by how each was grown: along the field (and its first "
+               "steps), along input strands, bridges")
+      ->excludes("--clusters");
   app.add_option("EXTRACT_H5", extract_path, "extract.h5 the strands were grown from");
   app.add_option("STRANDS_H5", strands_path, "strands.h5 from the grow stage");
   app.add_option("--name", name, "first column (default: the strands file)");
@@ -102,6 +139,21 @@ int main(int argc, char** argv) {
                         static_cast<double>(std::max<int64_t>(1, grown.strands.strand_count())),
                     static_cast<long long>(passages[c].rooted_leaving),
                     static_cast<long long>(passages[c].passing_in));
+      return 0;
+    }
+    if (by_rule) {
+      const hair::ExtractedPaint paint = hair::read_extracted_paint(extract);
+      const double near_m = 0.1 * grown.head_height_m;
+      const hair::PaintedFlow judged_flow = hair::flow_with_rails(
+          paint.mesh, paint.flow, hair::h5::read_strand_set(extract, "/strands"), near_m);
+      print_flow_by_rule(
+          label, hair::flow_agreement_by_rule(
+                     grown.strands,
+                     hair::segments_along_painted_flow(paint.mesh, judged_flow, grown.strands,
+                                                       hair::kClearFlowCoherence,
+                                                       hair::kFlowAgreementAngleDeg, near_m),
+                     hair::h5::read_enum_values(hair::h5::File::open_read_only(strands_path),
+                                                "/strands/point_rule")));
       return 0;
     }
     hair::GrowMeasures m = hair::measure_grown_strands(
