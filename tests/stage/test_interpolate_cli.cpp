@@ -248,6 +248,13 @@ TEST_F(InterpolateCli, AFrameRangeIsThoseFramesOfAFullRun) {
     EXPECT_TRUE(hair::read_frame_points(part_file, row) ==
                 hair::read_frame_points(whole_file, row + 5))
         << "row " << row;
+  // One frame (a still of frame 7; it crashed in the output's check until session 18).
+  fs::path one = directory() / "one.h5";
+  run_stage("interpolate", {m.guides.string(), m.out.strands.string(), m.styles.string(),
+                            "--frames", "7:8", "-o", one.string()});
+  hair::h5::File one_file = hair::h5::File::open_read_only(one);
+  ASSERT_EQ(hair::read_frames_file(one_file).frame_count(), 1);
+  EXPECT_TRUE(hair::read_frame_points(one_file, 0) == hair::read_frame_points(whole_file, 7));
 }
 
 TEST_F(InterpolateCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {

@@ -18,7 +18,14 @@ FrameDatasetWriter::FrameDatasetWriter(File& file, const std::string& path, int6
   if (!parent.empty()) file.create_group(parent);
   std::array<hsize_t, 3> dims = {static_cast<hsize_t>(frames), static_cast<hsize_t>(rows),
                                  static_cast<hsize_t>(columns)};
-  Handle space(H5Screate_simple(3, dims.data(), nullptr), H5Sclose);
+  // A single frame is one chunk as large as the dataset, which HDF5 (1.10) then indexes as
+  // a single chunk; a filtered chunk written directly (H5Dwrite_chunk) there reads back
+  // unfiltered while the dataset is open (a stage's check of its output read deflated
+  // bytes as floats, and past the chunk's end). A frame axis that may grow keeps the
+  // chunk index of several frames.
+  std::array<hsize_t, 3> max_dims = dims;
+  if (frames == 1) max_dims[0] = H5S_UNLIMITED;
+  Handle space(H5Screate_simple(3, dims.data(), max_dims.data()), H5Sclose);
   Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_obj_track_times(properties.get(), false);
   keep_in_object_header(properties.get(), false);

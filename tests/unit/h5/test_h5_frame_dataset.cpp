@@ -124,5 +124,41 @@ TEST_F(H5FrameDatasetTest, AFrameSmallerThanAChunkIsOneChunk) {
   EXPECT_EQ(read_frame(file, "/p", 1), frame_values(1, 5));
 }
 
+TEST_F(H5FrameDatasetTest, ASingleFrameReadsBack) {
+  // One frame is one chunk as large as the dataset, which HDF5 1.10 indexes as a single
+  // chunk; written directly there it read back past its end (interpolate --frames 30:31
+  // crashed in the output's schema check).
+  // Read back before the file is closed, as a stage checks its output, and after.
+  const int64_t rows = 5000;
+  const std::vector<float> expected = frame_values(7, rows);
+  File written = File::create(path("one.h5"));
+  {
+    FrameDatasetWriter writer(written, "/frames/points", 1, rows, 3);
+    writer.write(0, expected);
+    EXPECT_EQ(read_frame(written, "/frames/points", 0), expected);
+    int64_t read = 0;
+    for_each_block<double>(written, "/frames/points", [&](int64_t, std::span<const double> values) {
+      read += static_cast<int64_t>(values.size());
+      return true;
+    });
+    EXPECT_EQ(read, rows * 3);
+  }
+  written.close();
+  File file = File::open_read_only(path("one.h5"));
+  EXPECT_EQ(read_frame(file, "/frames/points", 0), expected);
+  int64_t checked = 0;
+  for_each_block<double>(
+      file, "/frames/points", [&](int64_t first, std::span<const double> values) {
+        for (size_t i = 0; i < values.size(); ++i)
+          if (values[i] != static_cast<double>(expected[static_cast<size_t>(first) + i])) {
+            ADD_FAILURE() << "value " << first + static_cast<int64_t>(i) << " differs";
+            return false;
+          }
+        checked += static_cast<int64_t>(values.size());
+        return true;
+      });
+  EXPECT_EQ(checked, rows * 3);
+}
+
 }  // namespace
 }  // namespace hair::h5
