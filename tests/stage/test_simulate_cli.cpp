@@ -155,12 +155,14 @@ TEST_F(SimulateCli, AStillHeadKeepsTheGroomAndTheTailHoldsTogetherUnderTheShake)
   const hair::BundleSpread tail = hair::bundle_spread(
       hair::read_simulated_guides(hair::h5::File::open_read_only(shaken)));
   EXPECT_GT(tail.guides, 100);
-  // Issue 27's target is 1.3, met (1.14) with the classifier of before issue 26. With the
-  // retrained one, the tail's outer layer (cluster 0, 1,319 strands hanging from the band
-  // beside the tail) is normal, as its hand label says; simulated as a bundle of its own
-  // beside the tail's, it pushes the tail's guides to 1.35 at the worst frame (median
-  // 1.02; 1.27 with that layer held fixed). Bundling the two as one is open
-  // (docs/simulate.md).
+  // Issue 27's target is 1.3. Today (session 18) 1.02 median, 1.31 at the worst frame:
+  // the tail's cohesion damped (bundle_damping_ratio 1; undamped 1.14 / 1.53). Until
+  // session 18 the measure counted three stubs of the tail's cluster (0.5-5 cm strands
+  // ending by the nape) whose points, 20 cm from the tail's, swelled its rest spread from
+  // 20 to 33 mm and so read 1.05 / 1.23 for a tail that fanned out to 1.59; bundle_spread
+  // now leaves guides under half the cluster's median length out. With the classifier of
+  // issue 26, the tail's outer layer is a bundle of its own where clustering divides it
+  // (docs/simulate.md, "What is not met").
   EXPECT_LE(tail.median, 1.1);
   EXPECT_LE(tail.largest, 1.4);
   EXPECT_GT(tail.largest, 1.01);  // it moved

@@ -662,7 +662,11 @@ class StrandGrower {
   std::optional<bool> follow_step() {
     const Vec3 point = strand_.points.back();
     GrowingContext::Following following = context_.follow(group_, backward_, point);
-    bool turned_back = direction_.squaredNorm() > 0 && following.direction.dot(direction_) < 0;
+    // Just entered, the strand turns as next_entry() allowed (a tail after its band by up
+    // to continued_root_max_angle_deg): only later steps may not turn back.
+    bool turned_back =
+        !just_entered_ && direction_.squaredNorm() > 0 && following.direction.dot(direction_) < 0;
+    just_entered_ = false;
     if (following.past_end || following.distance_m > lost_m_ || turned_back) return false;
     direction_ = following.direction;
     // The midpoint rule, as along the field: the rail's direction half a step on. A step
@@ -740,6 +744,7 @@ class StrandGrower {
     cluster_ = next_cluster;
     backward_ = entry.backward;
     visited_.push_back(group_);
+    just_entered_ = true;
     const StrandSet& strands = context_.input().input_strands;
     Vec3 start = point_of(strands.points, backward_ ? strands.offsets[entry.strand + 1] - 1
                                                     : strands.offsets[entry.strand]);
@@ -796,6 +801,7 @@ class StrandGrower {
   int32_t group_ = -1;             ///< the group followed (-1: none)
   int32_t cluster_;                ///< the cluster the strand is in
   bool backward_ = false;          ///< the group is followed tip to root
+  bool just_entered_ = false;      ///< enter()ed the group, not yet followed a step
 };
 
 /// Unit normal of body triangle `t` (right-hand rule of its vertex order).

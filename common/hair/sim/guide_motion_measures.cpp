@@ -76,10 +76,27 @@ BundleSpread bundle_spread(const SimulatedGuides& guides, int32_t cluster, doubl
         guides.guide_points_m[base], guides.guide_points_m[base + 1], guides.guide_points_m[base + 2]));
   };
   std::vector<int64_t> members;
+  std::vector<double> length_m;
   for (int64_t g = 0; g < rest.strand_count(); ++g)
     if (clusters[static_cast<size_t>(g)] == cluster &&
-        rest.offsets[static_cast<size_t>(g) + 1] - rest.offsets[static_cast<size_t>(g)] >= 2)
+        rest.offsets[static_cast<size_t>(g) + 1] - rest.offsets[static_cast<size_t>(g)] >= 2) {
       members.push_back(g);
+      double length = 0;
+      for (int64_t row = rest.offsets[static_cast<size_t>(g)];
+           row + 1 < rest.offsets[static_cast<size_t>(g) + 1]; ++row)
+        length += (point_of(rest.points, row + 1) - point_of(rest.points, row)).norm();
+      length_m.push_back(length);
+    }
+  if (!length_m.empty()) {  // the tail's guides: at least half the median length
+    std::vector<double> sorted = length_m;
+    std::nth_element(sorted.begin(),
+                     sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const double shortest_m = 0.5 * sorted[sorted.size() / 2];
+    std::vector<int64_t> kept;
+    for (size_t m = 0; m < members.size(); ++m)
+      if (length_m[m] >= shortest_m) kept.push_back(members[m]);
+    members = std::move(kept);
+  }
   spread.guides = static_cast<int64_t>(members.size());
   if (members.size() < 2) return spread;
   std::vector<Eigen::Vector3d> line;

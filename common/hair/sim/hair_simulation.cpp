@@ -40,6 +40,7 @@ void check_params(const SimulationParams& p) {
   require(p.body_voxel_h > 0 && p.body_clearance_h >= 0, "body field spacing must be positive");
   require(p.density_cell_h > 0, "density_cell_h must be positive");
   require(p.bundle_cohesion_per_s2 >= 0, "bundle_cohesion_per_s2 must be 0 or positive");
+  require(p.bundle_damping_ratio >= 0, "bundle_damping_ratio must be 0 or positive");
   require(p.repulsion_interval_frames >= 1, "repulsion_interval_frames must be at least 1");
 }
 

@@ -42,6 +42,11 @@ struct SimulationParams {
   /// towards its bundle's centre line where it strays farther from it than at rest, with
   /// this stiffness per kilogram (1/s^2; 0: off). See bundle_cohesion.h.
   double bundle_cohesion_per_s2 = 1600;
+  /// The hair-hair friction inside a tail: a hair particle straying beyond its rest
+  /// distance is damped in its speed away from the centre line (relative to the bundle's
+  /// own motion), as this fraction of the cohesion spring's critical damping (held to
+  /// 1 / dt). See bundle_cohesion.h.
+  double bundle_damping_ratio = 1;
   double gravity_m_s2 = 9.81;       ///< along -Y
   double body_clearance_h = 0.004;  ///< hair particles are kept this far outside the body
                                     ///< (as grow keeps the grown points)

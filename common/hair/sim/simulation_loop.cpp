@@ -32,12 +32,14 @@ SimulationLoop::SimulationLoop(const SimulationScene& scene, const HeadMotion& m
       density_(params.density_cell_h * scene.head_height_m),
       rest_density_(params.density_cell_h * scene.head_height_m),
       steppers_(static_cast<size_t>(omp_get_max_threads())),
-      cohesion_(result.guides, running_, params.bundle_cohesion_per_s2),
+      cohesion_(result.guides, running_, params.bundle_cohesion_per_s2,
+                params.bundle_damping_ratio),
       shares_(running_.size()),
       spring_j_(running_.size()) {
   if (cohesion_.active())
-    spdlog::info("{}: {} tails hold together ({} guides)", scene.source, cohesion_.bundle_count(),
-                 cohesion_.guide_count());
+    spdlog::info("{}: {} tails hold together ({} guides, and {} of other clusters hanging in them)",
+                 scene.source, cohesion_.bundle_count(), cohesion_.guide_count(),
+                 cohesion_.follower_count());
 }
 
 void SimulationLoop::start() {

@@ -66,6 +66,11 @@ void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
              "tails hold together: a guide hanging from a band is drawn back towards its "
              "bundle's centre line beyond its rest distance, per kg (1/s^2; 0: off)",
              ParamRange::closed(0, 1e6));
+  params.add("bundle_damping_ratio", p.bundle_damping_ratio,
+             "tails hold together: a guide's hair straying beyond its rest distance from its "
+             "bundle's centre line is damped in its outward speed, a fraction of the "
+             "cohesion's critical damping (held to 1/dt; 0: undamped)",
+             ParamRange::closed(0, 10));
   params.add("gravity_m_s2", p.gravity_m_s2, "gravity along -Y, m/s^2",
              ParamRange::closed(0, 1000));
   params.add("body_clearance_h", p.body_clearance_h,

@@ -511,6 +511,68 @@ TEST(StrandGrowing, StrandsLeavingTheirClusterReachATailThatHangsOffTheScalp) {
   EXPECT_EQ(reaching_over, 0);
 }
 
+// A ponytail's nape strands rise to the band and its tail hangs down from there: the
+// strand turns by more than a right angle where it enters the tail. Here the middle group
+// (the tail, cluster 1, not starting at the root) leaves card 0's ends outwards, level, at
+// about 110 degrees to the card's end, and bends down through a quarter circle of 1 cm to
+// hang 12 cm. next_entry() lets a strand at the card's end into it (up to
+// continued_root_max_angle_deg, 120 degrees); its first step along the middle must not
+// then count as turning back. Before, it did, and the strand went on elsewhere (on
+// ponytail01 up over the crown: 30 of its strands flew off the cap in the shake).
+TEST(StrandGrowing, StrandsEnteringATailAtMoreThanARightAngleHangDownIt) {
+  Scene scene = make_scene(true, 0, kGap);
+  GrowInput& input = scene.input;
+  input.cluster_starts_at_root = {1, 0, 1};
+  const Vec3 out = card_frame(kContinuedCard).out;
+  const StrandSet& old_strands = input.input_strands;
+  const auto& group = std::get<std::vector<int32_t>>(old_strands.strand_attributes.at("group"));
+  std::vector<Points3f> polylines;
+  std::vector<int32_t> strand_group;
+  for (int64_t s = 0; s < old_strands.strand_count(); ++s) {
+    if (group[static_cast<size_t>(s)] == kMiddleGroup) continue;
+    polylines.push_back(old_strands.strand(s));
+    strand_group.push_back(group[static_cast<size_t>(s)]);
+  }
+  constexpr double kBend = 0.01;
+  std::vector<double> hanging_tip_y;
+  for (const Vec3& end : scene.continued_rail_ends) {
+    const Vec3 start = end + 0.004 * out;
+    std::vector<Vec3> points;
+    for (int i = 0; i <= 6; ++i) {  // level out, then a quarter circle down
+      const double angle = std::numbers::pi / 2 * i / 6;
+      points.push_back(start + kBend * (std::sin(angle) * out + (std::cos(angle) - 1) * kUp));
+    }
+    for (int i = 1; i <= 24; ++i) points.push_back(points.back() - kInputStep * kUp);
+    Points3f rail(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i)
+      rail.row(static_cast<Eigen::Index>(i)) = points[i].transpose().cast<float>();
+    polylines.push_back(rail);
+    strand_group.push_back(kMiddleGroup);
+    hanging_tip_y.push_back(points.back().y());
+  }
+  input.input_strands = strand_set_from_polylines(polylines);
+  input.input_strands.strand_attributes["group"] = strand_group;
+
+  const GrowResult result = grow_strands(input, params_with(kStrandCount));
+  const auto& point_cluster =
+      std::get<std::vector<int32_t>>(result.strands.point_attributes.at("cluster"));
+  int64_t under = 0, hanging = 0;
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+    if (!under_card(kContinuedCard, root_of(result.strands, s))) continue;
+    ++under;
+    const int64_t last = result.strands.offsets[s + 1] - 1;
+    if (point_cluster[static_cast<size_t>(last)] == 1 &&
+        last_of(result.strands, s).y() < hanging_tip_y.front() + 0.03)
+      ++hanging;
+  }
+  std::printf(
+      "[ grow     ] sphere: %lld of the %lld strands under card 0 turn into a tail leaving at "
+      "about 110 degrees and hang down it\n",
+      static_cast<long long>(hanging), static_cast<long long>(under));
+  ASSERT_GT(under, 20);
+  EXPECT_GT(hanging, under / 2);
+}
+
 /// Height of `p` above the sphere.
 double height_above_sphere(const Vec3& p) { return (p - kCentre).norm() - kRadius; }
 

@@ -144,19 +144,91 @@ TEST(BundleCohesion, ALongStepNeverThrowsAStrayParticlePastWhereItBelongs) {
   (void)rest;
 }
 
+TEST(BundleCohesion, ALoneGuideHangingInATailFollowsIt) {
+  // The tail's five guides (cluster 0), a guide of cluster 1 hanging inside it (the path
+  // of guide 0, half way to the centre) and one of cluster 2 hanging 10 cm beside it.
+  std::vector<std::vector<Vec3>> strands = tail(0.05, 0.01);
+  std::vector<Vec3> inside = strands[0], beside = strands[0];
+  for (Vec3& p : inside) p.x() *= 0.5;
+  for (Vec3& p : beside) p.x() += 0.1;
+  strands.push_back(inside);
+  strands.push_back(beside);
+  Guides g = make_guides(strands);
+  g.guides[5].cluster = 1;
+  g.guides[6].cluster = 2;
+  BundleCohesion cohesion(g.guides, g.running, 1600, 1);
+  EXPECT_EQ(cohesion.bundle_count(), 1);
+  EXPECT_EQ(cohesion.guide_count(), 5);
+  EXPECT_EQ(cohesion.follower_count(), 1);
+  EXPECT_TRUE(cohesion.member(5));
+  EXPECT_FALSE(cohesion.member(6));
+  // At rest nothing; the follower's tip swung 5 cm out is drawn back, and a follower
+  // leaves the centre line as it was (the members' tips pull as before).
+  std::vector<std::vector<Vec3>> acceleration(g.running.size());
+  cohesion.accelerations(g.running, 1.0 / 60, acceleration);
+  for (const auto& strand : acceleration)
+    for (const Vec3& a : strand) EXPECT_LT(a.norm(), 1e-9);
+  const auto tip = static_cast<size_t>(g.running[5].model.hair_particle.back());
+  g.running[5].state.position_m[tip] += Vec3(0.05, 0, 0);
+  cohesion.accelerations(g.running, 1.0 / 60, acceleration);
+  EXPECT_LT(acceleration[5][tip].x(), -0.5 * 1600 * 0.03);
+  for (size_t m = 0; m < 5; ++m)
+    for (const Vec3& a : acceleration[m]) EXPECT_LT(a.norm(), 1e-9);
+}
+
+TEST(BundleCohesion, StrayingOutwardIsDampedSwingingAsOneIsNot) {
+  Guides g = make_guides(tail(0.05, 0.01));
+  const double dt_s = 1.0 / 60;
+  BundleCohesion undamped(g.guides, g.running, 1600, 0), damped(g.guides, g.running, 1600, 1);
+  // Critical damping 2 sqrt(1600) = 80/s, held to 1/dt: 60/s at the default step, 80/s at
+  // a quarter of it; none when undamped.
+  EXPECT_DOUBLE_EQ(damped.damping_for_step(dt_s), 60);
+  EXPECT_DOUBLE_EQ(damped.damping_for_step(dt_s / 4), 80);
+  EXPECT_DOUBLE_EQ(undamped.damping_for_step(dt_s), 0);
+  // Strand 0's tip 5 cm out along +x and moving on outwards at 1 m/s; the others still.
+  const auto tip = static_cast<size_t>(g.running[0].model.hair_particle.back());
+  g.running[0].state.position_m[tip] += Vec3(0.05, 0, 0);
+  g.running[0].state.velocity_m_s[tip] = Vec3(1, 0, 0);
+  std::vector<std::vector<Vec3>> spring(g.running.size()), with_damping(g.running.size());
+  undamped.accelerations(g.running, dt_s, spring);
+  damped.accelerations(g.running, dt_s, with_damping);
+  // The centre line's tip moves at the members' mean, 0.2 m/s: the tip leaves it at about
+  // 0.8 m/s, and is held back by 60/s times that more than by the spring alone.
+  const double extra = spring[0][tip].x() - with_damping[0][tip].x();
+  EXPECT_GT(extra, 0.9 * 60 * 0.8 * 0.9);
+  EXPECT_LT(extra, 60 * 0.8 * 1.01);
+  // Every hair of the tail moving alike (the tail swinging as one): no relative speed, no
+  // damping; the spring alone.
+  for (RunningStrand& strand : g.running)
+    for (Vec3& v : strand.state.velocity_m_s) v = Vec3(1, 0, 0);
+  damped.accelerations(g.running, dt_s, with_damping);
+  undamped.accelerations(g.running, dt_s, spring);
+  EXPECT_LT((with_damping[0][tip] - spring[0][tip]).norm(), 1e-9);
+  // Coming back in fast, the damping may cancel the spring but never pushes outwards.
+  g.running[0].state.velocity_m_s[tip] = Vec3(-50, 0, 0);
+  damped.accelerations(g.running, dt_s, with_damping);
+  EXPECT_LT(with_damping[0][tip].norm(), 1e-9);
+  // Within its rest distance and moving outwards: left alone, as the spring leaves it.
+  g.running[0].state.position_m[tip] -= Vec3(0.06, 0, 0);
+  g.running[0].state.velocity_m_s[tip] = Vec3(-1, 0, 0);
+  damped.accelerations(g.running, dt_s, with_damping);
+  EXPECT_LT(with_damping[0][tip].norm(), 1e-9);
+}
+
 /// Guides `rest` over `frames` frames: the head yawed by 10 degrees a frame and the
 /// guides turned with it, but guide 1's tip moved by `tip_move_m` (in the head's frame)
-/// from frame 1 on.
-SimulatedGuides turning_guides(int frames, double tip_move_m) {
+/// from frame 1 on. With `stub`, a third guide of the cluster, 1 cm long, 40 cm away.
+SimulatedGuides turning_guides(int frames, double tip_move_m, bool stub = false) {
   SimulatedGuides guides;
   std::vector<std::vector<Vec3>> strands{{Vec3(0, 0, 0), Vec3(0, -0.1, 0), Vec3(0, -0.2, 0)},
                                          {Vec3(0.1, 0, 0), Vec3(0.1, -0.1, 0), Vec3(0.1, -0.2, 0)}};
+  if (stub) strands.push_back({Vec3(0.5, 0, 0), Vec3(0.5, -0.005, 0), Vec3(0.5, -0.01, 0)});
   for (const auto& points : strands) {
     Points3f block(3, 3);
     for (int i = 0; i < 3; ++i) block.row(i) = points[static_cast<size_t>(i)].cast<float>().transpose();
     guides.rest.append_strand(block);
   }
-  guides.rest.strand_attributes["cluster"] = std::vector<int32_t>{0, 0};
+  guides.rest.strand_attributes["cluster"] = std::vector<int32_t>(strands.size(), 0);
   guides.frame_count = frames;
   for (int f = 0; f < frames; ++f) {
     RigidTransform head;
@@ -194,6 +266,11 @@ TEST(GuideMotionMeasures, ABundlesSpreadIsAgainstItsRest) {
   ASSERT_EQ(spread.ratio.size(), 4u);
   EXPECT_NEAR(spread.ratio[0], 1.0, 1e-6);
   EXPECT_NEAR(spread.ratio[1], std::hypot(0.1, 0.1) / 0.1, 1e-5);
+  // A stub of the cluster, far from the tail: not one of its guides, the same spread.
+  const BundleSpread with_stub = bundle_spread(turning_guides(4, 0.1, true), -1, 1.0);
+  EXPECT_EQ(with_stub.guides, 2);
+  EXPECT_NEAR(with_stub.rest_spread_m, 0.05, 1e-6);
+  EXPECT_NEAR(with_stub.ratio[1], spread.ratio[1], 1e-9);
 }
 
 }  // namespace
