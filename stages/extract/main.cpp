@@ -71,9 +71,9 @@ int main(int argc, char** argv) {
           hair_path, body_path);
     spdlog::debug(
         "{} degenerate faces removed, {} triangles paired, {} left, {} rails parted, "
-        "{} fragments dropped",
+        "{} fragments dropped, {} strands turned to run with their group",
         stats.degenerate_faces_removed, stats.triangles_paired, stats.triangles_left,
-        stats.rails_parted, stats.fragments_dropped);
+        stats.rails_parted, stats.fragments_dropped, stats.strands_turned_to_their_group);
     if (result.head.head_height < 0.1 || result.head.head_height > 0.5)
       spdlog::warn("head height {:.3f} m is not a human head's: is unit_scale right?",
                    result.head.head_height);

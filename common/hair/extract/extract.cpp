@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "hair/core/error.h"
+#include "hair/extract/group_sense.h"
 #include "hair/extract/painted_streamlines.h"
 #include "hair/extract/rail_paint.h"
 #include "hair/geom/point_index.h"
@@ -1208,6 +1209,12 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   decide_directions(vertices, regions, thresholds, params, head_height_m, result.stats);
   group_strands(patches, topologies, along, regions, std::move(traced),
                 params.continuation_radius_h * head_height_m, head_distance, thresholds, result);
+  // Last, a strand that runs against the rest of its group turns round (the hair a patch
+  // shows flows smoothly across it), within twice the continuation radius.
+  GroupSenseParams sense;
+  sense.radius_m = 2 * params.continuation_radius_h * head_height_m;
+  result.stats.strands_turned_to_their_group =
+      turn_strands_against_their_group(result.strands, result.group_first_strand, sense);
 
   result.scalp_triangle =
       scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,

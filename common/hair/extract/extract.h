@@ -118,6 +118,9 @@ struct ExtractStats {
   /// against their vertex ids, turned because their ids and their texture's v both said
   /// the other way.
   int64_t ids_and_texture_overruled_head_distance = 0;
+  /// Strands that ran against the other strands of their group, turned round
+  /// (group_sense.h).
+  int64_t strands_turned_to_their_group = 0;
 };
 
 /// Everything extract.h5 holds (schemas/extract.json), in metres.
