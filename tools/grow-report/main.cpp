@@ -44,6 +44,24 @@ std::string share_text(double share, int64_t judged) {
   return text;
 }
 
+/// What grown strands are judged against: the extract's paint and input strands, and the
+/// flow (the paint, or the rails where there is none) within near_m (0.1 H) of the mesh.
+struct JudgedFlow {
+  hair::ExtractedPaint paint;
+  hair::StrandSet input;
+  double near_m = 0;
+  hair::PaintedFlow flow;
+};
+JudgedFlow judged_flow_of(const hair::h5::File& extract, double head_height_m) {
+  JudgedFlow judged{hair::read_extracted_paint(extract),
+                    hair::h5::read_strand_set(extract, "/strands"),
+                    0.1 * head_height_m,
+                    {}};
+  judged.flow =
+      hair::flow_with_rails(judged.paint.mesh, judged.paint.flow, judged.input, judged.near_m);
+  return judged;
+}
+
 /// A row of the --by-rule table: a tally, its share of `all_judged` and its share along.
 void print_tally_row(const char* what, const hair::FlowTally& tally, int64_t all_judged) {
   std::printf("| %s | %lld | %s | %s |\n", what, static_cast<long long>(tally.judged),
@@ -141,17 +159,16 @@ int main(int argc, char** argv) {
                     static_cast<long long>(passages[c].passing_in));
       return 0;
     }
+    // The flow grown strands are judged against: the paint, or the rails where there is
+    // none, within 0.1 H of the mesh.
+    const JudgedFlow judged = judged_flow_of(extract, grown.head_height_m);
     if (by_rule) {
-      const hair::ExtractedPaint paint = hair::read_extracted_paint(extract);
-      const double near_m = 0.1 * grown.head_height_m;
-      const hair::PaintedFlow judged_flow = hair::flow_with_rails(
-          paint.mesh, paint.flow, hair::h5::read_strand_set(extract, "/strands"), near_m);
       print_flow_by_rule(
           label, hair::flow_agreement_by_rule(
                      grown.strands,
-                     hair::segments_along_painted_flow(paint.mesh, judged_flow, grown.strands,
-                                                       hair::kClearFlowCoherence,
-                                                       hair::kFlowAgreementAngleDeg, near_m),
+                     hair::segments_along_painted_flow(judged.paint.mesh, judged.flow,
+                                                       grown.strands, hair::kClearFlowCoherence,
+                                                       hair::kFlowAgreementAngleDeg, judged.near_m),
                      hair::h5::read_enum_values(hair::h5::File::open_read_only(strands_path),
                                                 "/strands/point_rule")));
       return 0;
@@ -163,16 +180,14 @@ int main(int argc, char** argv) {
                         hair::h5::read_vector<int32_t>(extract, "/mesh/face_group")));
 
     // The flow: input strands against the paint where it is clear; grown strands against
-    // the paint, or the rails where there is none, within 0.1 H of the mesh.
-    const hair::ExtractedPaint paint = hair::read_extracted_paint(extract);
-    const hair::StrandSet input = hair::h5::read_strand_set(extract, "/strands");
-    const double near_m = 0.1 * grown.head_height_m;
+    // the judged flow.
+    const hair::ExtractedPaint& paint = judged.paint;
+    const double near_m = judged.near_m;
+    const hair::PaintedFlow& judged_flow = judged.flow;
     int64_t input_judged = 0, grown_judged = 0;
-    const double input_along =
-        hair::painted_flow_agreement(paint.mesh, paint.flow, input, hair::kClearFlowCoherence,
-                                     hair::kFlowAgreementAngleDeg, near_m, input_judged);
-    const hair::PaintedFlow judged_flow =
-        hair::flow_with_rails(paint.mesh, paint.flow, input, near_m);
+    const double input_along = hair::painted_flow_agreement(
+        paint.mesh, paint.flow, judged.input, hair::kClearFlowCoherence,
+        hair::kFlowAgreementAngleDeg, near_m, input_judged);
     const double grown_along = hair::painted_flow_agreement(
         paint.mesh, judged_flow, grown.strands, hair::kClearFlowCoherence,
         hair::kFlowAgreementAngleDeg, near_m, grown_judged);
