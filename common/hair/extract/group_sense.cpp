@@ -107,7 +107,8 @@ int64_t turn_strands_against_their_group(StrandSet& strands,
   for (size_t g = 0; g + 1 < group_first_strand.size(); ++g) {
     std::vector<int64_t> group;
     for (int64_t s = group_first_strand[g]; s < group_first_strand[g + 1]; ++s) group.push_back(s);
-    if (group.size() < 3) continue;  // two strands: no majority
+    if (group.size() < 3) continue;                   // two strands: no majority
+    std::vector<bool> reversed(group.size(), false);  // each strand: turned an odd number of times
     for (int round = 0; round < params.max_rounds; ++round) {
       const GroupSegments segments = group_segments(strands, group);
       std::vector<int64_t> against;
@@ -117,9 +118,13 @@ int64_t turn_strands_against_their_group(StrandSet& strands,
         if (judged >= params.min_judged && cosine <= -params.min_mean_cosine) against.push_back(s);
       }
       if (against.empty()) break;
-      for (int64_t s : against) reverse_strand(strands, s);
-      turned += static_cast<int64_t>(against.size());
+      for (int64_t s : against) {
+        reverse_strand(strands, s);
+        reversed[static_cast<size_t>(s - group.front())] =
+            !reversed[static_cast<size_t>(s - group.front())];
+      }
     }
+    turned += std::count(reversed.begin(), reversed.end(), true);
   }
   return turned;
 }
