@@ -257,6 +257,7 @@ TEST_F(SimulateCli, WrongInputsFailCleanly) {
       {{extract, strands, styles, "--motion", "dance"}, "motion"},
       {{extract, strands, styles, "--fps", "0"}, "fps"},
       {{extract, strands, styles, "--substeps", "0"}, "substeps"},
+      {{extract, strands, styles, "--bundle_damping_ratio", "-1"}, "bundle_damping_ratio"},
       {{extract, strands, styles, "--keyframes", (directory / "none.csv").string()}, "none.csv"},
       {{extract, strands, styles, "--keyframes", (directory / "bad.csv").string()}, "line 3"},
       {{extract, strands}, "STYLES_H5"},
