@@ -41,6 +41,9 @@ int main(int argc, char** argv) {
   p.add("field_band_h", params.field_band_h,
         "the field reaches this far from its cluster's input strands, in H",
         hair::ParamRange::above(0));
+  p.add("field_paint_seeds", params.field_paint_seeds,
+        "faces whose painted strokes are clear seed their cluster's orientation field along "
+        "them, signed by their group's input strands (false: the input strands alone)");
   p.add("length_factor", params.length_factor,
         "the field phase ends at this many times the remaining length of the input strand "
         "nearest the root",

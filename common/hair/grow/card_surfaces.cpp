@@ -20,6 +20,22 @@ void fan_triangulation_with_groups(const std::vector<int64_t>& face_offsets,
   }
 }
 
+Points3f fan_painted_flow(const std::vector<int64_t>& face_offsets, const Points3f& face_flow,
+                          const std::vector<float>& coherence, double min_coherence) {
+  if (face_offsets.empty() || static_cast<size_t>(face_flow.rows()) != face_offsets.size() - 1 ||
+      coherence.size() != face_offsets.size() - 1)
+    throw std::invalid_argument("one painted axis and coherence per face");
+  std::vector<Eigen::Index> triangle_face;
+  for (size_t face = 0; face + 1 < face_offsets.size(); ++face)
+    for (int64_t k = 2; k < face_offsets[face + 1] - face_offsets[face]; ++k)
+      triangle_face.push_back(static_cast<Eigen::Index>(face));
+  Points3f flow = Points3f::Zero(static_cast<Eigen::Index>(triangle_face.size()), 3);
+  for (size_t t = 0; t < triangle_face.size(); ++t)
+    if (coherence[static_cast<size_t>(triangle_face[t])] >= min_coherence)
+      flow.row(static_cast<Eigen::Index>(t)) = face_flow.row(triangle_face[t]);
+  return flow;
+}
+
 CardSurfaces::CardSurfaces(const Points3f& vertices, const Triangles3i& triangles,
                            const std::vector<int32_t>& triangle_group, int64_t group_count) {
   if (triangle_group.size() != static_cast<size_t>(triangles.rows()))

@@ -17,6 +17,13 @@ void fan_triangulation_with_groups(const std::vector<int64_t>& face_offsets,
                                    const std::vector<int32_t>& face_group, Triangles3i& triangles,
                                    std::vector<int32_t>& triangle_group);
 
+/// Per triangle of fan_triangulation_with_groups(): its face's painted flow axis
+/// (`face_flow`, extract.h5 /mesh/face_flow) where the face's strokes are clear (`coherence`
+/// at least `min_coherence`: kClearFlowCoherence), else zero (GrowInput::hair_triangle_flow).
+/// Throws std::invalid_argument when `face_flow` or `coherence` is not one per face.
+Points3f fan_painted_flow(const std::vector<int64_t>& face_offsets, const Points3f& face_flow,
+                          const std::vector<float>& coherence, double min_coherence);
+
 /// The faces of each strand group (patch, card) of the hair mesh, for the nearest point of
 /// a group's own card: a strand following a card's input strands keeps to that card's
 /// surface (GrowParams::follow_card_keep_h), where a card lies on, under or across

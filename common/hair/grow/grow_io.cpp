@@ -34,6 +34,14 @@ GrowInput read_grow_input(const h5::File& extract, const h5::File& types,
   fan_triangulation_with_groups(face_offsets,
                                 h5::read_vector<int32_t>(extract, "/mesh/face_vertices"),
                                 face_group, input.hair_triangles, input.hair_triangle_group);
+  // Each triangle's painted axis: its face's, where the face's strokes are clear.
+  const Points3f face_flow = h5::read_matrix<float, 3>(extract, "/mesh/face_flow");
+  const auto coherence = h5::read_vector<float>(extract, "/mesh/face_flow_coherence");
+  if (static_cast<size_t>(face_flow.rows()) != face_group.size() ||
+      coherence.size() != face_group.size())
+    throw Error::bad_dataset(extract.name(), "/mesh/face_flow", "is not one axis per face");
+  input.hair_triangle_flow =
+      fan_painted_flow(face_offsets, face_flow, coherence, kClearFlowCoherence);
   auto group_count = extracted.group_first_strand.size() - 1;
 
   TypedGroups typed = read_typed_groups(types);

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <numeric>
 #include <optional>
 
 #include "hair/core/error.h"
@@ -18,6 +19,7 @@
 #include "hair/geom/triangle_mesh_distance.h"
 #include "hair/grow/card_surfaces.h"
 #include "hair/grow/orientation_field.h"
+#include "hair/grow/painted_field_seeds.h"
 #include "hair/grow/surface_sampling.h"
 
 namespace hair {
@@ -877,6 +879,28 @@ double flagged_area_m2(const GrowInput& input, const std::vector<uint8_t>& flags
   return area_m2;
 }
 
+/// The seeds the painted faces give the fields (GrowParams::field_paint_seeds): of the
+/// groups whose strands seed them, sampled at half a voxel's edge, so that a
+/// face adds to each voxel it covers about what a strand through it does.
+StrandSet field_paint_seeds(const GrowInput& input, const GrowingContext& context,
+                            const GrowParams& params) {
+  const StrandSet& strands = input.input_strands;
+  std::vector<uint8_t> seeding_group(input.group_cluster.size(), 0);
+  for (int64_t s = 0; s < strands.strand_count(); ++s)
+    if (context.carries_roots(s))
+      seeding_group[static_cast<size_t>(context.group_of_strand(s))] = 1;
+  if (!params.field_paint_seeds || input.hair_triangle_flow.rows() != input.hair_triangles.rows()) {
+    StrandSet none;
+    none.strand_attributes["group"] = std::vector<int32_t>{};
+    return none;
+  }
+  PaintedFieldSeedParams seed_params;
+  seed_params.spacing_m = 0.5 * params.field_voxel_h * input.head_height_m;
+  seed_params.sign_radius_m = params.field_band_h * input.head_height_m;
+  return painted_field_seeds(input.hair_vertices, input.hair_triangles, input.hair_triangle_group,
+                             input.hair_triangle_flow, seeding_group, strands, seed_params);
+}
+
 }  // namespace
 
 GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
@@ -955,13 +979,23 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   for (int32_t c : root_cluster) ++result.clusters[static_cast<size_t>(c)].strand_count;
   std::vector<std::optional<OrientationField>> fields(static_cast<size_t>(cluster_count));
   OrientationFieldParams field_params{params.field_voxel_h * h, params.field_band_h * h};
+  const StrandSet paint_seeds = field_paint_seeds(input, context, params);
+  const auto& seed_group =
+      std::get<std::vector<int32_t>>(paint_seeds.strand_attributes.at("group"));
   for (int32_t c = 0; c < cluster_count; ++c) {
     if (result.clusters[static_cast<size_t>(c)].strand_count == 0) continue;
-    std::vector<int64_t> ids;
+    std::vector<Points3f> seeding;  // the cluster's root-carrying strands, then its paint seeds
     for (int64_t s = 0; s < strands.strand_count(); ++s)
-      if (context.cluster_of_strand(s) == c && context.carries_roots(s)) ids.push_back(s);
-    if (ids.empty()) continue;
-    fields[static_cast<size_t>(c)] = OrientationField::build(strands, ids, field_params);
+      if (context.cluster_of_strand(s) == c && context.carries_roots(s))
+        seeding.emplace_back(strands.strand(s));
+    if (seeding.empty()) continue;
+    for (int64_t s = 0; s < paint_seeds.strand_count(); ++s)
+      if (context.cluster_of_group(seed_group[static_cast<size_t>(s)]) == c)
+        seeding.emplace_back(paint_seeds.strand(s));
+    std::vector<int64_t> ids(seeding.size());
+    std::iota(ids.begin(), ids.end(), int64_t{0});
+    fields[static_cast<size_t>(c)] =
+        OrientationField::build(strand_set_from_polylines(seeding), ids, field_params);
     result.clusters[static_cast<size_t>(c)].field_voxel_count =
         fields[static_cast<size_t>(c)]->band_voxel_count();
     result.clusters[static_cast<size_t>(c)].field_seeded_voxels =

@@ -41,6 +41,11 @@ struct GrowParams {
   double step_h = 0.02;         ///< growing step (RK2 along the field, or along a strand)
   double field_voxel_h = 0.02;  ///< orientation-field grid spacing
   double field_band_h = 0.06;   ///< the field reaches this far from its cluster's strands
+  /// The faces whose paint is clear (GrowInput::hair_triangle_flow) seed their cluster's
+  /// field along their strokes, as the input strands do, each signed by its group's input
+  /// strands (painted_field_seeds.h): between a cap's streamlines, around its crown whorl,
+  /// the field follows the paint instead of an average of the lines on either side.
+  bool field_paint_seeds = true;
   /// The field phase ends once a strand is this many times as long as what remains of the
   /// input strand nearest its root (from that strand's nearest point to its tip).
   double length_factor = 1.0;
@@ -135,6 +140,10 @@ struct GrowInput {
   Points3f hair_vertices;
   Triangles3i hair_triangles;
   std::vector<int32_t> hair_triangle_group;
+  /// Per triangle of hair_triangles: its face's painted flow axis (extract.h5
+  /// /mesh/face_flow) where the paint is clear (coherence at least kClearFlowCoherence),
+  /// else zero; empty: no paint seeds the fields (GrowParams::field_paint_seeds).
+  Points3f hair_triangle_flow;
   double head_height_m = 0;
   std::string source;  ///< names the input in errors
 };

@@ -222,6 +222,27 @@ int64_t bridge_start(const StrandSet& strands, int64_t s, int64_t held, int64_t 
   return start;
 }
 
+/// Where the bridge of strand `s` to its wisp ends: its first point still bound. Where the
+/// held points gave way as far as they may (bridge_start(): the root stays held) and the
+/// bridge from `start` - 1 to `bound_from` still spans less than `length_m` of arc (a strand
+/// rooted right by the braid's top), the bound points give way from the first, up to the
+/// last but one, until it does.
+int64_t bridge_end(const StrandSet& strands, int64_t s, int64_t start, int64_t bound_from,
+                   double length_m) {
+  const int64_t begin = strands.offsets[static_cast<size_t>(s)];
+  const int64_t size = strands.offsets[static_cast<size_t>(s) + 1] - begin;
+  double arc = 0;  // from point max(start - 1, 0) to bound_from
+  for (int64_t i = std::max<int64_t>(start, 1); i <= bound_from; ++i)
+    arc += (point_of(strands.points, begin + i) - point_of(strands.points, begin + i - 1)).norm();
+  while (bound_from + 2 < size && arc < length_m) {
+    ++bound_from;
+    arc += (point_of(strands.points, begin + bound_from) -
+            point_of(strands.points, begin + bound_from - 1))
+               .norm();
+  }
+  return bound_from;
+}
+
 /// The points of strand `s` between its held points and its wisp (a braided strand),
 /// bridged from the head (the last held point, or the root) to the wisp by arc length.
 void bridge_to_wisp(const StrandSet& strands, int64_t s, StrandBinding& binding) {
@@ -517,6 +538,14 @@ StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& 
       held = bridge_start(strands, s, held, bound_from, params.wisp_bridge_length_m);
       binding.held_count[si] = held;
       binding.interpolated_from[si] = held;
+      if (held < bound_from) {
+        const int64_t bridged_to =
+            bridge_end(strands, s, held, bound_from, params.wisp_bridge_length_m);
+        for (int64_t i = bound_from; i < bridged_to; ++i)
+          binding.tetrahedron[static_cast<size_t>(begin + i)] = -1;  // bridged, not bound
+        bound_from = bridged_to;
+        binding.bound_from[si] = bound_from;
+      }
       if (held < bound_from)
         bridge_to_wisp(strands, s, binding);
       else

@@ -50,7 +50,8 @@ struct InterpolationParams {
   /// over at least this much of its length: where its held points (a cap feeding the
   /// braid) run right up to the braid, their last stretch is bridged instead of held, so
   /// the braid's top moving against the head spreads over it rather than tearing one
-  /// segment (docs/interpolate.md).
+  /// segment (docs/interpolate.md); where even its root lies nearer the braid than this
+  /// (a strand rooted right by the braid's top), its first bound points are bridged too.
   double wisp_bridge_length_m = 0.08;
   /// Where a braided strand passes from one wisp tetrahedron to the next, its points
   /// within this arc length of the seam move partly with the other tetrahedron too (half
@@ -95,7 +96,8 @@ struct StrandBinding {
   std::vector<std::array<float, 3>> weights;   ///< sum to 1 over the used guides
   /// Leading points rigid with the head (in fixed clusters from the root).
   std::vector<int64_t> held_count;
-  /// First point bound to a wisp tetrahedron (the strand's size if none).
+  /// First point bound to a wisp tetrahedron (the strand's size if none); the bound points
+  /// before it that a bridge took over (params.wisp_bridge_length_m) are bridged.
   std::vector<int64_t> bound_from;
   /// Per grown point (#points): arc parameter along the guides (0 at the strand's anchor,
   /// 1 at its tip) of interpolated points, and the offset at rest from the weighted guide
@@ -152,7 +154,8 @@ StrandGuides strand_guides(const StrandBinding& binding, int64_t strand);
 /// clump), else the nearest guide of the cluster, else the nearest guide. A strand with points to
 /// interpolate and no guide at all is held. A strand bound to a wisp follows no guide: its points
 /// between its held ones (or its root) and its first bound point are bridged, over at least
-/// params.wisp_bridge_length_m (held points giving way, the root excepted): they move with the
+/// params.wisp_bridge_length_m (held points giving way, the root excepted, then bound points
+/// from the first, the tip excepted): they move with the
 /// head plus, by their share of the arc, the first bound point's move away from where the head
 /// would carry it (method braided).
 /// Deterministic. Throws Error::usage for parameters out of range and Error::runtime for

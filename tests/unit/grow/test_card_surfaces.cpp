@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hair/extract/painted_flow.h"
 #include "hair/grow/card_surfaces.h"
 
 namespace hair {
@@ -63,6 +64,24 @@ TEST(CardSurfaces, NearestPointOfEachGroupsOwnFaces) {
   EXPECT_FALSE(surfaces.nearest(1, point));
   // Built empty: no group has faces.
   EXPECT_FALSE(CardSurfaces().nearest(0, point));
+}
+
+TEST(CardSurfaces, EachTriangleTakesItsFacesPaintWhereItIsClear) {
+  // A quad whose strokes are clear (two triangles), a triangle whose strokes are not, a
+  // second quad just clear (the threshold itself).
+  const std::vector<int64_t> face_offsets{0, 4, 7, 11};
+  Points3f face_flow(3, 3);
+  face_flow << 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  const std::vector<float> coherence{0.9f, 0.29f, static_cast<float>(kClearFlowCoherence)};
+  const Points3f flow = fan_painted_flow(face_offsets, face_flow, coherence, kClearFlowCoherence);
+  ASSERT_EQ(flow.rows(), 5);
+  Points3f expected(5, 3);
+  expected << 1, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 1;
+  EXPECT_EQ(flow, expected);
+  EXPECT_THROW(fan_painted_flow(face_offsets, face_flow, {0.9f, 0.9f}, kClearFlowCoherence),
+               std::invalid_argument);
+  EXPECT_THROW(fan_painted_flow(face_offsets, face_flow.topRows(2), coherence, kClearFlowCoherence),
+               std::invalid_argument);
 }
 
 }  // namespace

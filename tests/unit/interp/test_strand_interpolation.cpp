@@ -549,6 +549,73 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
               1e-5);
 }
 
+TEST(StrandInterpolation, AStrandRootedRightByTheBraidsTopIsBridgedIntoTheBraid) {
+  // A strand rooted 1.5 cm from a braid's top (3 cap points 5 mm apart, fixed) that runs on
+  // down the braid (20 points bound to a wisp tetrahedron), as grow makes of a root beside
+  // the braid's top (braid01's nape). The braid's top swings, turning as in the test above
+  // and moving 5 cm. Bridged
+  // over the 1.5 cm from its root alone, the bridge tears; bridged over 8 cm, its first bound
+  // points giving way, the move spreads over the bridge.
+  Scene scene = make_scene();
+  std::vector<Vec3> points;
+  std::vector<int32_t> clusters;
+  for (int i = 0; i < 3; ++i) {
+    points.push_back(Vec3(0.4 - 0.005 * (3 - i), 0.01, 0.05));
+    clusters.push_back(kCap);
+  }
+  for (int k = 0; k < 20; ++k) {
+    points.push_back(Vec3(0.4, 0.01 - 0.005 * k, 0.05));
+    clusters.push_back(kBraid);
+  }
+  const int64_t s = add_scene_strand(scene, points, clusters),
+                begin = scene.strands.offsets[static_cast<size_t>(s)];
+  const Vec3 origin(0.4, -0.01, 0.05);
+  add_rest_tetrahedron(scene, origin);
+  scene.guides.wisp_tetrahedron_offsets = {0, 3};
+  for (int i = 3; i < 23; ++i) {
+    scene.guides.binding_point.push_back(begin + i);
+    scene.guides.binding_wisp.push_back(0);
+    scene.guides.binding_tetrahedron.push_back(2);
+    scene.guides.binding_local_m.push_back((points[static_cast<size_t>(i)] - origin).cast<float>());
+  }
+  std::vector<float> wisp = turned_wisp(scene, 2, 2, -0.05f);
+  const std::vector<float> guide_points = guides_at_rest(scene);
+  const auto si = static_cast<size_t>(s);
+
+  InterpolationParams short_bridge;
+  short_bridge.wisp_bridge_length_m = 0.015;  // what lies between the root and the braid
+  StrandBinding binding = bind_strands(scene.strands, scene.guides, short_bridge);
+  EXPECT_EQ(binding.held_count[si], 1);
+  EXPECT_EQ(binding.bound_from[si], 3);
+  std::vector<float> frame;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, frame);
+  const double short_stretch = largest_stretch(scene, frame, s);
+
+  binding = bind_strands(scene.strands, scene.guides, {});  // the default: 8 cm
+  EXPECT_EQ(binding.method[si], InterpolationMethod::braided);
+  EXPECT_EQ(binding.bridged[si], 1);
+  EXPECT_EQ(binding.held_count[si], 1);  // the root
+  const int64_t bound_from = binding.bound_from[si];
+  const double bridge_m = 0.005 * static_cast<double>(bound_from);
+  EXPECT_GE(bridge_m, InterpolationParams{}.wisp_bridge_length_m - 1e-6);
+  EXPECT_LT(bridge_m - 0.005, InterpolationParams{}.wisp_bridge_length_m);
+  for (int64_t i = 0; i < 23; ++i)  // bridged points are no longer bound
+    EXPECT_EQ(binding.tetrahedron[static_cast<size_t>(begin + i)] >= 0, i >= bound_from) << i;
+  interpolate_frame(binding, scene.strands, {guide_points.data(), wisp.data(), {}}, frame);
+  const double long_stretch = largest_stretch(scene, frame, s);
+  std::printf("[ interp   ] rooted by a braid: largest stretch %.2f over 1.5 cm, %.2f over 8 cm\n",
+              short_stretch, long_stretch);
+  EXPECT_GT(short_stretch, 2.5);
+  EXPECT_LT(long_stretch, 1.5);
+  EXPECT_LT((row_of(frame, begin) - points[0]).norm(), 1e-6);  // the root stays
+  const Vec3 moved_origin = origin - Vec3(0, 0, 0.05);
+  for (int64_t i = bound_from; i < 23; ++i)
+    EXPECT_LT((row_of(frame, begin + i) -
+               (moved_origin + braid_swing() * (points[static_cast<size_t>(i)] - origin)))
+                  .norm(),
+              1e-5);
+}
+
 TEST(StrandInterpolation, ABraidedStrandBendsAtASeamBetweenTetrahedraNotTears) {
   // A braided strand of 16 points 5 mm apart down -Y, its first 8 bound to one wisp
   // tetrahedron and the rest to the next (the two new tetrahedra 2 and 3 of the scene's

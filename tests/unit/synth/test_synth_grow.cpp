@@ -283,6 +283,12 @@ Grown grow_model(const SynthModel& model, const PolyMesh& body, const std::strin
   fan_triangulation_with_groups(extract.hair_mesh.face_offsets, extract.hair_mesh.face_vertices,
                                 extract.face_group, input.hair_triangles,
                                 input.hair_triangle_group);
+  const PaintedFlow& paint = extract.painted_flow;
+  Points3f face_flow = Points3f::Zero(static_cast<Eigen::Index>(paint.direction.size()), 3);
+  for (size_t f = 0; f < paint.direction.size(); ++f)
+    face_flow.row(static_cast<Eigen::Index>(f)) = paint.direction[f].transpose();
+  input.hair_triangle_flow = fan_painted_flow(extract.hair_mesh.face_offsets, face_flow,
+                                              paint.coherence, kClearFlowCoherence);
   input.head_height_m = h;
   input.source = name;
   GrowParams params;
