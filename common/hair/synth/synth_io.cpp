@@ -104,7 +104,10 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["braid_depth_m"] = c.braid_depth_m;
     item["braid_period_m"] = c.braid_period_m;
     item["band_gap_m"] = c.band_gap_m;
+    item["swirl_min_deg"] = c.swirl_min_deg;
+    item["swirl_max_deg"] = c.swirl_max_deg;
     item["one_piece_rings"] = c.one_piece_rings;
+    item["one_piece_grid"] = c.one_piece_grid;
     item["bun_radius_m"] = c.bun_radius_m;
     item["ringlet_radius_m"] = c.ringlet_radius_m;
     item["ringlet_pitch_m"] = c.ringlet_pitch_m;
@@ -136,7 +139,8 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
                      {"tucked_share", d.tucked_share},
                      {"tuck_length_m", d.tuck_length_m},
                      {"tuck_depth_m", d.tuck_depth_m},
-                     {"painted_texture", d.painted_texture}};
+                     {"painted_texture", d.painted_texture},
+                     {"painted_fade", d.painted_fade}};
   return json;
 }
 
@@ -204,7 +208,10 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
                           "braid_depth_m",
                           "braid_period_m",
                           "band_gap_m",
+                          "swirl_min_deg",
+                          "swirl_max_deg",
                           "one_piece_rings",
+                          "one_piece_grid",
                           "bun_radius_m",
                           "ringlet_radius_m",
                           "ringlet_pitch_m",
@@ -247,7 +254,10 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
       read_key(item, where, "braid_depth_m", c.braid_depth_m);
       read_key(item, where, "braid_period_m", c.braid_period_m);
       read_key(item, where, "band_gap_m", c.band_gap_m);
+      read_key(item, where, "swirl_min_deg", c.swirl_min_deg);
+      read_key(item, where, "swirl_max_deg", c.swirl_max_deg);
       read_key(item, where, "one_piece_rings", c.one_piece_rings);
+      read_key(item, where, "one_piece_grid", c.one_piece_grid);
       read_key(item, where, "bun_radius_m", c.bun_radius_m);
       read_key(item, where, "ringlet_radius_m", c.ringlet_radius_m);
       read_key(item, where, "ringlet_pitch_m", c.ringlet_pitch_m);
@@ -264,12 +274,27 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
   if (json.contains("defects")) {
     const nlohmann::json& item = json["defects"];
     const std::string where = "defects.";
-    require_known_keys(
-        item, where,
-        {"rails_min", "rails_max", "cap_rails", "segment_length_m", "normal_pieces_max",
-         "braid_piece_length_m", "gap_m", "overlap_share", "overlap_m", "jitter_m",
-         "triangulate_share", "reversed_share", "shuffled_share", "scalp_lift_m",
-         "body_clearance_m", "tucked_share", "tuck_length_m", "tuck_depth_m", "painted_texture"});
+    require_known_keys(item, where,
+                       {"rails_min",
+                        "rails_max",
+                        "cap_rails",
+                        "segment_length_m",
+                        "normal_pieces_max",
+                        "braid_piece_length_m",
+                        "gap_m",
+                        "overlap_share",
+                        "overlap_m",
+                        "jitter_m",
+                        "triangulate_share",
+                        "reversed_share",
+                        "shuffled_share",
+                        "scalp_lift_m",
+                        "body_clearance_m",
+                        "tucked_share",
+                        "tuck_length_m",
+                        "tuck_depth_m",
+                        "painted_texture",
+                        "painted_fade"});
     DefectSpec& d = spec.defects;
     read_key(item, where, "rails_min", d.rails_min);
     read_key(item, where, "rails_max", d.rails_max);
@@ -290,6 +315,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
     read_key(item, where, "tuck_length_m", d.tuck_length_m);
     read_key(item, where, "tuck_depth_m", d.tuck_depth_m);
     read_key(item, where, "painted_texture", d.painted_texture);
+    read_key(item, where, "painted_fade", d.painted_fade);
   }
   check_spec(spec);
   return spec;
@@ -316,6 +342,10 @@ void check_spec(const HairStyleSpec& spec) {
     require_range(where + "braid_depth_m", c.braid_depth_m, 0, 0.1);
     require_range(where + "braid_period_m", c.braid_period_m, 0.01, 1.0);
     require_range(where + "band_gap_m", c.band_gap_m, 0, 0.2);
+    require_range(where + "swirl_max_deg", c.swirl_max_deg, 0, 120);
+    require_range(where + "swirl_min_deg", c.swirl_min_deg, 0, c.swirl_max_deg);
+    if (c.one_piece_rings && c.one_piece_grid)
+      throw Error::usage(where + "one_piece_rings and one_piece_grid: a cap is meshed one way");
     require_range(where + "bun_radius_m", c.bun_radius_m, 0, 0.1);
     require_range(where + "ringlet_radius_m", c.ringlet_radius_m, 0, 0.05);
     require_range(where + "ringlet_pitch_m", c.ringlet_pitch_m, 0.005, 0.5);

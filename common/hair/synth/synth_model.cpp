@@ -470,7 +470,10 @@ void add_short_cap(const ComponentSpec& component, int component_index, const De
   const double step_deg = kStep_m / head.radius_m * 180.0 / kPi;
   // The whorl turns every grid the same way (neighbours stay side by side): by this much
   // over 90 degrees from the whorl.
-  double swirl_deg = rng.uniform(-12.0, 12.0);
+  double swirl_deg = rng.uniform(-component.swirl_max_deg, component.swirl_max_deg);
+  if (component.swirl_min_deg > 0)  // a magnitude in [min, max], the sign from the draw above
+    swirl_deg =
+        std::copysign(rng.uniform(component.swirl_min_deg, component.swirl_max_deg), swirl_deg);
   for (int k = 0; k < count; ++k) {
     double around_deg = component.azimuth_min_deg + sector_deg * (k + 0.5 + rng.uniform(-0.1, 0.1));
     double root_deg = rng.uniform(component.polar_min_deg, component.polar_max_deg);
@@ -1035,6 +1038,139 @@ SynthPatch build_ring_patch(const std::vector<Stream>& streams,
   return patch;
 }
 
+/// One patch for the streams `stream_ids` of a short cap meshed as one piece in a grid of
+/// latitudes and longitudes round the head's vertical axis (rows `segment_length_m` apart
+/// in polar angle from the crown, 36 columns of azimuth), as a wig cap modelled without
+/// regard to how its hair runs: neither family of edges follows the hair. Faces are kept
+/// where every corner lies within 1.5 cm of a stream's centre, nearest to it between its
+/// ends (the hair's region, no farther than its roots and tips); the row next to the crown
+/// is of triangles round the pole. Texture v is the arc length along the nearest stream
+/// over the longest stream's length and u runs round the streams (the nearest stream's
+/// index plus how far the point lies towards the next nearest neighbour, over the stream
+/// count), so that the painted strokes, along v, follow the streams. Vertex ids run row by
+/// row from the crown.
+SynthPatch build_grid_patch(const std::vector<Stream>& streams,
+                            const std::vector<int32_t>& stream_ids, const DefectSpec& defects,
+                            const Head& head, std::vector<float>& positions, PolyMesh& mesh,
+                            std::vector<float>& uv, std::vector<float>& vertex_along_m) {
+  SynthPatch patch;
+  patch.stream = stream_ids.front();
+  patch.style = HairStyle::short_hair;
+  patch.type = GroupType::root_free;
+  const auto count = static_cast<int>(stream_ids.size());
+  patch.rails = count;
+  double longest = 0;
+  for (int32_t id : stream_ids)
+    longest = std::max(longest, streams[static_cast<size_t>(id)].length_m());
+  patch.end_m = longest;
+  // Where a point lies against the streams: the nearest centre point of each.
+  struct Nearest {
+    double distance_m = std::numeric_limits<double>::infinity();
+    double along_m = 0;
+    bool interior = false;
+  };
+  auto nearest_on = [&](int k, const Vec3& p) {
+    const Stream& stream = streams[static_cast<size_t>(stream_ids[static_cast<size_t>(k)])];
+    Nearest best;
+    for (size_t i = 0; i < stream.points.size(); ++i) {
+      const double d = (stream.points[i] - p).norm();
+      if (d < best.distance_m) best = {d, stream.along_m[i], i > 0 && i + 1 < stream.points.size()};
+    }
+    return best;
+  };
+  constexpr int kColumns = 36;
+  const double row_deg = defects.segment_length_m / head.radius_m * 180.0 / kPi;
+  const int rows = static_cast<int>(std::ceil(150.0 / row_deg)) + 1;
+  // Row 0 is the crown's pole, one vertex; row r > 0 has kColumns.
+  struct GridVertex {
+    Vec3 position;
+    double u = 0, v = 0;
+    bool in_hair = false;
+    int32_t id = -1;
+  };
+  std::vector<std::vector<GridVertex>> grid(static_cast<size_t>(rows));
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < (r == 0 ? 1 : kColumns); ++c) {
+      const auto [surface, outward] = head.surface(direction(c * 360.0 / kColumns, r * row_deg));
+      GridVertex vertex;
+      std::vector<Nearest> by_stream(static_cast<size_t>(count));
+      int k_best = 0;
+      for (int k = 0; k < count; ++k) {
+        by_stream[static_cast<size_t>(k)] = nearest_on(k, surface);
+        if (by_stream[static_cast<size_t>(k)].distance_m <
+            by_stream[static_cast<size_t>(k_best)].distance_m)
+          k_best = k;
+      }
+      const Nearest& best = by_stream[static_cast<size_t>(k_best)];
+      vertex.in_hair = best.interior && best.distance_m < 0.015;
+      const int before = (k_best + count - 1) % count, after = (k_best + 1) % count;
+      const bool towards_after = by_stream[static_cast<size_t>(after)].distance_m <=
+                                 by_stream[static_cast<size_t>(before)].distance_m;
+      const double d_other =
+          by_stream[static_cast<size_t>(towards_after ? after : before)].distance_m;
+      const double share = best.distance_m / std::max(1e-12, best.distance_m + d_other);
+      vertex.u = (k_best + (towards_after ? share : -share)) / count;
+      vertex.u -= std::floor(vertex.u);
+      vertex.v = std::clamp(best.along_m / longest, 0.0, 1.0);
+      const double lift = defects.scalp_lift_m * (1.0 + 0.5 * vertex.v);
+      vertex.position = surface + lift * outward;
+      grid[static_cast<size_t>(r)].push_back(vertex);
+    }
+  patch.first_vertex = static_cast<int64_t>(vertex_along_m.size());
+  patch.first_face = mesh.face_count();
+  auto id_of = [&](GridVertex& vertex) {
+    if (vertex.id < 0) {
+      vertex.id = static_cast<int32_t>(vertex_along_m.size());
+      for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(vertex.position[k]));
+      vertex_along_m.push_back(static_cast<float>(vertex.v * longest));
+    }
+    return vertex.id;
+  };
+  // The faces kept, then their vertices numbered row by row from the crown, round each
+  // row from the face (azimuth 0), as a modelling tool numbers a sphere's.
+  auto kept = [](const std::vector<GridVertex*>& corners) {
+    return std::all_of(corners.begin(), corners.end(),
+                       [](const GridVertex* corner) { return corner->in_hair; });
+  };
+  std::vector<std::vector<GridVertex*>> faces;
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int c = 0; c < kColumns; ++c) {
+      auto& upper = grid[static_cast<size_t>(r)];
+      auto& lower = grid[static_cast<size_t>(r + 1)];
+      GridVertex* a = &lower[static_cast<size_t>(c)];
+      GridVertex* b = &lower[static_cast<size_t>((c + 1) % kColumns)];
+      std::vector<GridVertex*> corners =
+          r == 0 ? std::vector<GridVertex*>{&upper[0], a, b}
+                 : std::vector<GridVertex*>{&upper[static_cast<size_t>(c)], a, b,
+                                            &upper[static_cast<size_t>((c + 1) % kColumns)]};
+      if (kept(corners)) faces.push_back(std::move(corners));
+    }
+  for (auto& row : grid)
+    for (GridVertex& vertex : row)
+      for (const auto& corners : faces)
+        if (std::find(corners.begin(), corners.end(), &vertex) != corners.end()) {
+          id_of(vertex);
+          break;
+        }
+  auto face_of = [&](const std::vector<GridVertex*>& corners) {
+    std::vector<int32_t> face;
+    const double u0 = corners.front()->u;
+    for (GridVertex* corner : corners) {
+      face.push_back(id_of(*corner));
+      double u = corner->u;  // unwrapped next to the first corner's
+      if (u - u0 > 0.5) u -= 1;
+      if (u0 - u > 0.5) u += 1;
+      uv.push_back(static_cast<float>(u));
+      uv.push_back(static_cast<float>(corner->v));
+    }
+    mesh.append_face(face);
+  };
+  for (const auto& corners : faces) face_of(corners);
+  patch.vertex_count = static_cast<int64_t>(vertex_along_m.size()) - patch.first_vertex;
+  patch.face_count = mesh.face_count() - patch.first_face;
+  return patch;
+}
+
 /// Style of the hair at arc length `along_m` of a stream: that of the last piece starting
 /// at or before it (hidden gaps take the style of the piece before them).
 HairStyle style_at(const Stream& stream, double along_m) {
@@ -1083,14 +1219,15 @@ void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head,
 
 const std::vector<std::string>& painted_preset_names() {
   static const std::vector<std::string> names = {
-      "ring_cap", "cap_over_layer", "mohawk", "low_tail", "face_locks", "bun", "ringlets", "bob"};
+      "ring_cap", "cap_over_layer", "mohawk", "low_tail", "face_locks",
+      "bun",      "ringlets",       "bob",    "swirl_cap"};
   return names;
 }
 
 bool in_training_corpus(const std::string& name) {
   // The bob's clusters come out shorter than a real bob's (0.54 H against bob02's
   // 0.86 H), and trained on, they pulled short03's cap to normal (docs/synth.md).
-  return name != "bob";
+  return name != "bob" && name != "swirl_cap";
 }
 
 const std::vector<std::string>& preset_names() {
@@ -1256,6 +1393,25 @@ HairStyleSpec painted_preset(const std::string& name) {
     spec.defects.normal_pieces_max = 1;
     spec.defects.painted_texture = true;
     spec.components = {left, right};
+  } else if (name == "swirl_cap") {
+    // A one-piece wig cap as ring_cap, but meshed in a grid of latitudes and longitudes
+    // that pays no heed to its hair (short01's and short03's caps), its hair swirling round
+    // the whorl (turned by 50-80 degrees 90 degrees from it, so that it runs level round
+    // the sides of the head), and its texture tiled, not fading to the tips: extract traces
+    // streamlines along the paint, which gives each face's axis but not which way the hair
+    // runs, so each streamline is oriented by its own ends (the higher is the root), which
+    // a level or rising stretch of the swirl can read either way; the streamlines around it
+    // say which (extract's group sense).
+    ComponentSpec cap = preset("ring_cap").components.front();
+    cap.one_piece_rings = false;
+    cap.one_piece_grid = true;
+    cap.swirl_min_deg = 50;
+    cap.swirl_max_deg = 80;
+    cap.band_polar_deg = 30;
+    spec.defects.scalp_lift_m = 0.003;
+    spec.defects.painted_texture = true;
+    spec.defects.painted_fade = false;
+    spec.components = {cap};
   }
   return spec;
 }
@@ -1525,7 +1681,8 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
   for (size_t s = 0; s < streams.size(); ++s) {
     const Stream& stream = streams[s];
     auto stream_id = static_cast<int32_t>(s);
-    const bool in_rings = spec.components[static_cast<size_t>(stream.component)].one_piece_rings;
+    const ComponentSpec& component = spec.components[static_cast<size_t>(stream.component)];
+    const bool in_rings = component.one_piece_rings || component.one_piece_grid;
     if (in_rings) ring_streams[static_cast<size_t>(stream.component)].push_back(stream_id);
     int pieces = in_rings ? 0 : static_cast<int>(stream.pieces.size());
     for (int k = 0; k < pieces; ++k) {
@@ -1555,16 +1712,21 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     add_true_strands(stream, stream_id, head, strands_per_stream, strand_rng, strand_polylines,
                      strand_stream, model.strand_point_style);
   }
-  for (const std::vector<int32_t>& ids : ring_streams)
-    if (!ids.empty())
-      model.patches.push_back(build_ring_patch(streams, ids, spec.defects, head, rng, positions,
-                                               model.mesh, uv, model.vertex_along_m));
+  for (size_t c = 0; c < ring_streams.size(); ++c) {
+    const std::vector<int32_t>& ids = ring_streams[c];
+    if (ids.empty()) continue;
+    model.patches.push_back(spec.components[c].one_piece_grid
+                                ? build_grid_patch(streams, ids, spec.defects, head, positions,
+                                                   model.mesh, uv, model.vertex_along_m)
+                                : build_ring_patch(streams, ids, spec.defects, head, rng, positions,
+                                                   model.mesh, uv, model.vertex_along_m));
+  }
   model.mesh.vertices = Eigen::Map<const Points3f>(
       positions.data(), static_cast<Eigen::Index>(positions.size() / 3), 3);
   model.mesh.corner_uv =
       Eigen::Map<const Uv2f>(uv.data(), static_cast<Eigen::Index>(uv.size() / 2), 2);
   if (spec.defects.painted_texture) {
-    model.mesh.materials = {painted_hair_material(seed)};
+    model.mesh.materials = {painted_hair_material(seed, spec.defects.painted_fade)};
     model.mesh.face_material.assign(static_cast<size_t>(model.mesh.face_count()), 0);
   }
   model.stream_centres = strand_set_from_polylines(centres);

@@ -65,10 +65,22 @@ struct ComponentSpec {
   double braid_period_m = 0.07;
   /// Hidden length left out where a cap meets its tail (ponytail) or braid.
   double band_gap_m = 0.01;
+  /// Short cap: the whorl turns every grid the same way, by an angle drawn in
+  /// [swirl_min_deg, swirl_max_deg] with either sign, reached 90 degrees from it (the swirl
+  /// of a crown; with swirl_min_deg 0, drawn in [-swirl_max_deg, swirl_max_deg]). Far
+  /// beyond the default, the hair round the whorl runs level round the head.
+  double swirl_min_deg = 0.0;
+  double swirl_max_deg = 12.0;
   /// Short cap: meshed as one piece whose quads run in rings around the whorl (a wig cap),
   /// the rings' chains longer than the hair's, instead of one grid per stream. Its roots
   /// all lie polar_min_deg from the whorl.
   bool one_piece_rings = false;
+  /// Short cap: meshed as one piece in a grid of latitudes and longitudes round the head's
+  /// vertical axis, whatever way its hair runs (a wig cap modelled without regard to its
+  /// hair, as short01's and short03's): neither family of edges follows the hair, and only
+  /// the paint says where it goes. Its roots, as for one_piece_rings, lie polar_min_deg
+  /// from the whorl. Not with one_piece_rings.
+  bool one_piece_grid = false;
   /// Ponytail: above 0, the tail is coiled round the band into a bun of this radius,
   /// lying against the head, each stream from its own side of the band (an up-do);
   /// the coil is fixed hair, as the cap is.
@@ -141,8 +153,11 @@ struct DefectSpec {
   double tuck_length_m = 0.012;
   double tuck_depth_m = 0.008;
   /// The mesh carries a painted texture as artists' meshes do (synth_paint.h): strokes
-  /// along v, which runs root to tip on every patch, and an alpha fading towards the tips.
+  /// along v, which runs root to tip on every patch, and an alpha fading towards the tips...
   bool painted_texture = false;
+  /// ...or not fading (a tiled hair texture, as caps are often painted): then the paint
+  /// tells the hair's axis but not its root from its tip.
+  bool painted_fade = true;
 };
 
 /// A hairstyle: its components and defects (a preset, or a preset varied by a seed).
@@ -163,11 +178,16 @@ const std::vector<std::string>& preset_names();
 /// longer locks framing the face), "bun" (hair pulled up from the whole hairline to a
 /// band high on the back of the crown and coiled round it), "ringlets" (a one-piece cap
 /// over the top of the head with corkscrew ringlet tubes hanging from under its edge), "bob"
-/// (a few wide one-piece cards cut level at the jaw, as bob01 and bob02).
+/// (a few wide one-piece cards cut level at the jaw, as bob01 and bob02), "swirl_cap" (a
+/// one-piece cap in rings whose hair swirls round its whorl, painted with a tiled texture
+/// that does not fade: the paint gives the axis, the hair's own lie its sense, as short01's
+/// cap).
 const std::vector<std::string>& painted_preset_names();
 
 /// Whether corpus_plan() puts the preset `name` in the training corpus: every preset but
-/// "bob", whose clusters come out shorter than a real bob's (docs/synth.md).
+/// "bob", whose clusters come out shorter than a real bob's (docs/synth.md), and
+/// "swirl_cap", added for extract's orientation after the corpus was drawn (a preset in the
+/// corpus renumbers every model after it).
 bool in_training_corpus(const std::string& name);
 
 /// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.

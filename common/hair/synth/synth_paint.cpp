@@ -11,7 +11,7 @@
 
 namespace hair::synth {
 
-MeshMaterial painted_hair_material(uint32_t seed) {
+MeshMaterial painted_hair_material(uint32_t seed, bool fade) {
   const int size = kPaintedTextureSize_px;
   std::mt19937 engine(seed ^ 0x68a1c0deu);
   auto uniform = [&](double lo, double hi) {
@@ -30,8 +30,9 @@ MeshMaterial painted_hair_material(uint32_t seed) {
   for (int y = 0; y < size; ++y) {
     // Row 0 is v = 1 (the tips).
     const double v = 1.0 - (y + 0.5) / size;
-    const double alpha =
-        v <= kFadeStart_v ? 1.0 : 1.0 - (1.0 - kTipAlpha) * (v - kFadeStart_v) / (1.0 - kFadeStart_v);
+    const double alpha = !fade || v <= kFadeStart_v
+                             ? 1.0
+                             : 1.0 - (1.0 - kTipAlpha) * (v - kFadeStart_v) / (1.0 - kFadeStart_v);
     const double shift = sway_px * std::sin(2 * std::numbers::pi * y / sway_period_px);
     for (int x = 0; x < size; ++x) {
       const int column = ((x + static_cast<int>(std::lround(shift))) % size + size) % size;

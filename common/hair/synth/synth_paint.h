@@ -18,7 +18,8 @@ inline constexpr double kTipAlpha = 0.25;
 
 /// A material "hair" whose diffuse image (RGBA PNG, embedded) shows strokes along the
 /// texture's v axis, 3-6 texels apart with a slight sway, varied by `seed`, and an alpha
-/// fading towards v = 1. Deterministic.
-MeshMaterial painted_hair_material(uint32_t seed);
+/// fading towards v = 1; without `fade`, an alpha of 1 all over (a tiled hair texture, as
+/// caps are often painted). Deterministic.
+MeshMaterial painted_hair_material(uint32_t seed, bool fade = true);
 
 }  // namespace hair::synth

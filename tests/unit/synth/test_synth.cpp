@@ -589,6 +589,18 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
     json["components"][0][key] = value;
     EXPECT_THROW(spec_from_json(json), hair::Error) << key;
   }
+  // A swirling cap painted without a fade: its swirl round-trips, its minimum no more than
+  // its maximum, the fade a flag.
+  json = spec_json(preset("swirl_cap"));
+  EXPECT_EQ(json["components"][0]["swirl_min_deg"], 50.0);
+  EXPECT_EQ(json["defects"]["painted_fade"], false);
+  EXPECT_FALSE(spec_from_json(json).defects.painted_fade);
+  EXPECT_EQ(spec_from_json(json).components[0].swirl_max_deg, 80.0);
+  json["components"][0]["swirl_min_deg"] = 90.0;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("swirl_cap"));
+  json["components"][0]["swirl_max_deg"] = 200.0;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
   // A bob's volume round-trips and stays within 10 cm.
   json = spec_json(preset("bob"));
   EXPECT_EQ(json["components"][0]["hang_volume_m"], 0.012);

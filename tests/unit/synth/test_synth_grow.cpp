@@ -121,6 +121,10 @@ struct GrowScores {
   double braid_reach = kNotMeasured;   ///< braid-rooted grown strands reaching its tip
   /// Grown segments within 30 degrees of the axis of the nearest true segment.
   double along_truth = kNotMeasured;
+  /// Of those, the share that run the true way (root to tip, as the true segment): hair
+  /// grown along the right lines but the wrong way (from the tips towards the roots) shows
+  /// here only.
+  double true_way = kNotMeasured;
   /// The coverage mean of the component (layer) whose true strands lie farthest from the
   /// grown ones: a lost layer shows here.
   double worst_layer_coverage = kNotMeasured;
@@ -235,7 +239,7 @@ GrowScores measure(const SynthModel& model, const StrandSet& grown, double h) {
     }
   true_midpoint.conservativeResize(true_segments, 3);
   PointIndex true_segment_index(true_midpoint);
-  int64_t grown_segments = 0, along = 0;
+  int64_t grown_segments = 0, along = 0, true_way = 0;
   for (int64_t s = 0; s < grown.strand_count(); ++s)
     for (int64_t row = grown.offsets[s] + 1; row < grown.offsets[s + 1]; ++row) {
       Eigen::Vector3f segment = grown.points.row(row) - grown.points.row(row - 1);
@@ -244,12 +248,14 @@ GrowScores measure(const SynthModel& model, const StrandSet& grown, double h) {
           0.5f * (grown.points.row(row) + grown.points.row(row - 1)).transpose();
       const int32_t nearest = true_segment_index.nearest(midpoint, 1).front();
       ++grown_segments;
-      along += std::abs(segment.normalized().dot(true_direction[static_cast<size_t>(nearest)])) >=
-                       std::cos(30 * M_PI / 180)
-                   ? 1
-                   : 0;
+      const double cosine = segment.normalized().dot(true_direction[static_cast<size_t>(nearest)]);
+      if (std::abs(cosine) >= std::cos(30 * M_PI / 180)) {
+        ++along;
+        true_way += cosine > 0 ? 1 : 0;
+      }
     }
   scores.along_truth = share_of(along, static_cast<size_t>(grown_segments));
+  scores.true_way = share_of(true_way, static_cast<size_t>(along));
 
   scores.length_ratio = quantile(ratios, 0.5);
   scores.short_share = share_of(short_strands, ratios.size());
@@ -302,7 +308,7 @@ using Column = hair::testing::MeanColumn;
 /// One line of the table: the mean of its models (or of its presets' lines).
 struct Row {
   Column fidelity_mean, fidelity_p95, coverage_mean, coverage_p95, far_share, length_ratio,
-      short_share, braid_reach, along_truth, worst_layer_coverage;
+      short_share, braid_reach, along_truth, true_way, worst_layer_coverage;
   double seconds = 0;
   void add(const GrowScores& scores) {
     fidelity_mean.add(scores.fidelity_mean);
@@ -314,6 +320,7 @@ struct Row {
     short_share.add(scores.short_share);
     braid_reach.add(scores.braid_reach);
     along_truth.add(scores.along_truth);
+    true_way.add(scores.true_way);
     worst_layer_coverage.add(scores.worst_layer_coverage);
   }
   void add(const Row& row) {
@@ -326,16 +333,18 @@ struct Row {
     short_share.add(row.short_share.mean());
     braid_reach.add(row.braid_reach.mean());
     along_truth.add(row.along_truth.mean());
+    true_way.add(row.true_way.mean());
     worst_layer_coverage.add(row.worst_layer_coverage.mean());
     seconds += row.seconds;
   }
   void print(const std::string& label) const {
     std::printf(
         "[ synth    ] %-15s | %6.4f %6.4f | %6.4f %6.4f | %6.4f | %6.3f %6.3f | %6.3f | %6.3f | "
-        "%6.4f | %5.1f\n",
+        "%6.3f | %6.4f | %5.1f\n",
         label.c_str(), fidelity_mean.mean(), fidelity_p95.mean(), coverage_mean.mean(),
         coverage_p95.mean(), far_share.mean(), length_ratio.mean(), short_share.mean(),
-        braid_reach.mean(), along_truth.mean(), worst_layer_coverage.mean(), seconds);
+        braid_reach.mean(), along_truth.mean(), true_way.mean(), worst_layer_coverage.mean(),
+        seconds);
   }
 };
 
@@ -344,11 +353,11 @@ TEST(SynthGrow, DistanceToTrueStrandsPerPreset) {
   body.vertices *= 0.1f;
   std::printf(
       "[ synth    ] %-15s | fidelity (H)  | coverage (H)  | >0.1 H | length ratio  | braid  |"
-      " along  | worst  | time\n",
+      " along  | true   | worst  | time\n",
       "");
   std::printf(
       "[ synth    ] %-15s |   mean    p95 |   mean    p95 | share  | median   <0.5 | reach  |"
-      " truth  | layer  |  (s)\n",
+      " truth  | way    | layer  |  (s)\n",
       "preset");
   std::map<std::string, Row> rows;
   Row presets, braided;
