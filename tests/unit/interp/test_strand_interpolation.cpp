@@ -483,6 +483,25 @@ std::vector<float> turned_wisp(const Scene& scene, size_t t, size_t axis, float 
   return wisp;
 }
 
+/// Appends strand `points` (with its points' clusters) to the scene, its points from
+/// `first_bound` on bound to the wisp's third tetrahedron, added unturned at `origin` (a
+/// strand running into a braid); returns the strand's index.
+int64_t add_strand_into_braid(Scene& scene, const std::vector<Vec3>& points,
+                              const std::vector<int32_t>& clusters, int first_bound,
+                              const Vec3& origin) {
+  const int64_t s = add_scene_strand(scene, points, clusters),
+                begin = scene.strands.offsets[static_cast<size_t>(s)];
+  add_rest_tetrahedron(scene, origin);
+  scene.guides.wisp_tetrahedron_offsets = {0, 3};
+  for (int i = first_bound; i < static_cast<int>(points.size()); ++i) {
+    scene.guides.binding_point.push_back(begin + i);
+    scene.guides.binding_wisp.push_back(0);
+    scene.guides.binding_tetrahedron.push_back(2);
+    scene.guides.binding_local_m.push_back((points[static_cast<size_t>(i)] - origin).cast<float>());
+  }
+  return s;
+}
+
 TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
   // A strand over the cap (20 points 5 mm apart, fixed) that runs on into a braid (6 points
   // bound to a third wisp tetrahedron), as grow makes of a cap feeding a braid. The
@@ -500,17 +519,9 @@ TEST(StrandInterpolation, ACapStrandRunningIntoABraidIsBridgedNotTorn) {
     points.push_back(Vec3(0.4, 0.01 - 0.005 * k, 0.05));
     clusters.push_back(kBraid);
   }
-  const int64_t s = add_scene_strand(scene, points, clusters),
-                begin = scene.strands.offsets[static_cast<size_t>(s)];
   const Vec3 origin(0.4, -0.01, 0.05);
-  add_rest_tetrahedron(scene, origin);
-  scene.guides.wisp_tetrahedron_offsets = {0, 3};
-  for (int i = 20; i < 26; ++i) {
-    scene.guides.binding_point.push_back(begin + i);
-    scene.guides.binding_wisp.push_back(0);
-    scene.guides.binding_tetrahedron.push_back(2);
-    scene.guides.binding_local_m.push_back((points[static_cast<size_t>(i)] - origin).cast<float>());
-  }
+  const int64_t s = add_strand_into_braid(scene, points, clusters, 20, origin),
+                begin = scene.strands.offsets[static_cast<size_t>(s)];
   std::vector<float> wisp = turned_wisp(scene, 2, 2, -0.03f);
   const std::vector<float> guide_points = guides_at_rest(scene);
 
@@ -567,17 +578,9 @@ TEST(StrandInterpolation, AStrandRootedRightByTheBraidsTopIsBridgedIntoTheBraid)
     points.push_back(Vec3(0.4, 0.01 - 0.005 * k, 0.05));
     clusters.push_back(kBraid);
   }
-  const int64_t s = add_scene_strand(scene, points, clusters),
-                begin = scene.strands.offsets[static_cast<size_t>(s)];
   const Vec3 origin(0.4, -0.01, 0.05);
-  add_rest_tetrahedron(scene, origin);
-  scene.guides.wisp_tetrahedron_offsets = {0, 3};
-  for (int i = 3; i < 23; ++i) {
-    scene.guides.binding_point.push_back(begin + i);
-    scene.guides.binding_wisp.push_back(0);
-    scene.guides.binding_tetrahedron.push_back(2);
-    scene.guides.binding_local_m.push_back((points[static_cast<size_t>(i)] - origin).cast<float>());
-  }
+  const int64_t s = add_strand_into_braid(scene, points, clusters, 3, origin),
+                begin = scene.strands.offsets[static_cast<size_t>(s)];
   std::vector<float> wisp = turned_wisp(scene, 2, 2, -0.05f);
   const std::vector<float> guide_points = guides_at_rest(scene);
   const auto si = static_cast<size_t>(s);
