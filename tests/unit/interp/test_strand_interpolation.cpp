@@ -564,9 +564,8 @@ TEST(StrandInterpolation, AStrandRootedRightByTheBraidsTopIsBridgedIntoTheBraid)
   // A strand rooted 1.5 cm from a braid's top (3 cap points 5 mm apart, fixed) that runs on
   // down the braid (20 points bound to a wisp tetrahedron), as grow makes of a root beside
   // the braid's top (braid01's nape). The braid's top swings, turning as in the test above
-  // and moving 5 cm. Bridged
-  // over the 1.5 cm from its root alone, the bridge tears; bridged over 8 cm, its first bound
-  // points giving way, the move spreads over the bridge.
+  // and moving 5 cm. Bridged over the 1.5 cm from its root alone, the bridge tears; bridged
+  // over 8 cm, its first bound points giving way, the move spreads over the bridge.
   Scene scene = make_scene();
   std::vector<Vec3> points;
   std::vector<int32_t> clusters;
