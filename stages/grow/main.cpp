@@ -82,6 +82,10 @@ int main(int argc, char** argv) {
         hair::ParamRange::at_least(0));
   p.add("follow_pull", params.follow_pull, "...by at most this share of a step per step (0: never)",
         hair::ParamRange::closed(0, 1));
+  p.add("bridge_max_angle_deg", params.bridge_max_angle_deg,
+        "a bridge into the next input strand goes to its first point ahead within this angle "
+        "of the strand's direction, not behind or beside it (0: always to its start)",
+        hair::ParamRange::closed(0, 90));
   p.add("follow_card_keep_h", params.follow_card_keep_h,
         "...and towards the surface of its own card (the group's faces) beyond this, in H "
         "(0: no such hold)",

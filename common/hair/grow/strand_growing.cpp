@@ -336,6 +336,36 @@ class GrowingContext {
     return result;
   }
 
+  /// The first point of `entry`'s strand where it is entered.
+  Vec3 entry_start(const StrandEntry& entry) const {
+    const StrandSet& strands = input_.input_strands;
+    return point_of(strands.points, entry.backward ? strands.offsets[entry.strand + 1] - 1
+                                                   : strands.offsets[entry.strand]);
+  }
+
+  /// Where a bridge from `here`, going `direction`, into the input strand of `entry` goes:
+  /// its first point, read its way and short of its end, no farther than its start, that
+  /// lies within a step of `here` or ahead within bridge_max_angle_deg of `direction`;
+  /// std::nullopt where none does (or bridge_max_angle_deg is 0).
+  std::optional<Vec3> bridge_target(const StrandEntry& entry, const Vec3& here,
+                                    const Vec3& direction) const {
+    if (!(params_.bridge_max_angle_deg > 0) || direction.squaredNorm() == 0) return std::nullopt;
+    const StrandSet& strands = input_.input_strands;
+    const int64_t first = strands.offsets[entry.strand],
+                  last = strands.offsets[entry.strand + 1] - 1;
+    const double step_m = params_.step_h * h_;
+    const double start_gap_m = (entry_start(entry) - here).norm();
+    const double min_cos = std::cos(params_.bridge_max_angle_deg * std::numbers::pi / 180);
+    for (int64_t k = 0; k < last - first; ++k) {
+      const Vec3 p = point_of(strands.points, entry.backward ? last - k : first + k);
+      const Vec3 gap = p - here;
+      const double gap_m = gap.norm();
+      if (gap_m > start_gap_m + step_m) continue;
+      if (gap_m <= step_m || gap.dot(direction) >= min_cos * gap_m) return p;
+    }
+    return std::nullopt;
+  }
+
   /// The best input strand to continue into from `point` going `direction`, among
   /// strands of groups not yet visited and not of `excluded_cluster`: the nearest entry
   /// (weighted by how much it turns), from `preferred_cluster` if any qualifies; with
@@ -391,6 +421,14 @@ class GrowingContext {
       Vec3 leaving = (next - start).normalized();
       double turn_cos = leaving.dot(direction);
       if (turn_cos < (into_continuation ? min_cos_continued : min_cos)) continue;
+      // Across a gap the hair goes on ahead: not back to a start behind it, nor sideways
+      // to a card beside it (short01's spikes, stacked at every angle, chained round the
+      // crown so). A tail after its band is entered as it turns, above, and a strand
+      // hanging off the scalp (a braid's locks, crossing one another) as it lies.
+      if (!into_continuation && params_.bridge_max_angle_deg > 0 &&
+          !hangs_off_scalp_[static_cast<size_t>(entry.strand)] &&
+          !bridge_target(entry, point, direction))
+        continue;
       // Not behind us by more than the radius allows, and not across the gap sideways.
       Vec3 gap = start - point;
       double score = gap.norm() / reach_m + (1 - turn_cos);
@@ -737,7 +775,7 @@ class StrandGrower {
     return true;
   }
 
-  /// Into the input strand of `entry`: straight to its start; a step that gets no nearer
+  /// Into the input strand of `entry`: straight to bridge_target(); a step that gets no nearer
   /// (the start lies in the body, and each step is pushed back out) ends the bridge there.
   void enter(const StrandEntry& entry) {
     int32_t next_cluster = context_.cluster_of_strand(entry.strand);
@@ -747,9 +785,8 @@ class StrandGrower {
     backward_ = entry.backward;
     visited_.push_back(group_);
     just_entered_ = true;
-    const StrandSet& strands = context_.input().input_strands;
-    Vec3 start = point_of(strands.points, backward_ ? strands.offsets[entry.strand + 1] - 1
-                                                    : strands.offsets[entry.strand]);
+    const Vec3 start = context_.bridge_target(entry, strand_.points.back(), direction_)
+                           .value_or(context_.entry_start(entry));
     for (double gap_m = (start - strand_.points.back()).norm(); gap_m > step_m_ && !full();) {
       Vec3 towards = (start - strand_.points.back()).normalized();
       add_point(strand_.points.back() + step_m_ * towards, GrowRule::bridge, cluster_, group_);

@@ -97,6 +97,16 @@ struct GrowParams {
   /// offset it entered with).
   double follow_keep_h = 0.02;
   double follow_pull = 0.5;
+  /// Across a gap, hair goes on ahead: a bridge into the next input strand goes to the
+  /// first of its points (read its way, no farther than its start) that lies within a step
+  /// or ahead within this angle of the strand's direction, and a strand none of whose
+  /// points lies so is not continued into (a tail after its band excepted: it is entered
+  /// as continued_root_max_angle_deg allows). Where cards overlap (stacked spikes, layers)
+  /// the next starts behind or beside the end of the last: bridged to its start, the
+  /// strand ran back across the hair and on again, or hopped sideways from card to card
+  /// (short01's spikes chained so round its crown: grown along the paint 77.7% -> 82.5%).
+  /// 0: to the start of any strand next_entry() finds.
+  double bridge_max_angle_deg = 45;
   /// Where the input gives the hair mesh's faces (GrowInput::hair_triangles), a strand
   /// following a group also drifts back towards the nearest point of that group's own
   /// faces (its card's surface) where it lies farther than follow_card_keep_h from them,

@@ -735,6 +735,100 @@ Scene make_layered_scene() {
   return scene;
 }
 
+/// Card 0 (group 0, root-free, cluster 0: five rails 6 mm apart, 4 mm out, polar 10-45
+/// degrees) and a middle card (group 1, cluster 1) of five rails `lateral_m` to its side
+/// and `offset_m` out, from polar `first_deg` to 75 degrees: what cards stacked on a cap
+/// (short01's spikes) leave a strand at the end of its own.
+GrowInput card_and_next_card(double lateral_m, double offset_m, double first_deg) {
+  GrowInput input = head_sphere_input("sphere");
+  std::vector<Points3f> rails;
+  std::vector<int32_t> group;
+  for (int k = 0; k < 5; ++k) {
+    rails.push_back(card_zero_rail(0.006 * k - 0.012, kCardOffset, 10, 45));
+    group.push_back(0);
+  }
+  for (int k = 0; k < 5; ++k) {
+    rails.push_back(card_zero_rail(0.006 * k - 0.012 + lateral_m, offset_m, first_deg, 75));
+    group.push_back(1);
+  }
+  input.input_strands = strand_set_from_polylines(rails);
+  input.input_strands.strand_attributes["group"] = group;
+  input.group_type = {GroupType::root_free, GroupType::middle};
+  input.group_cluster = {0, 1};
+  return input;
+}
+
+/// Of the strands rooted under card 0 proper (polar 10 degrees on, within its width):
+/// how many, how many bridge into the next card, how many of those bridges run back
+/// (a bridge segment against the segment before the bridge), and how many end past
+/// polar 60 degrees (on the next card).
+struct NextCardCounts {
+  int64_t rooted = 0, bridged = 0, bridged_back = 0, ending_beyond = 0;
+};
+NextCardCounts next_card_counts(const GrowResult& result) {
+  NextCardCounts counts;
+  const StrandSet& strands = result.strands;
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    const Vec3 root = root_of(strands, s);
+    if (polar_in_card(0, root) < radians(10) || std::abs(lateral_in_card(0, root)) > 0.012)
+      continue;
+    ++counts.rooted;
+    bool bridged = false, back = false;
+    for (int64_t row = strands.offsets[s] + 2; row < strands.offsets[s + 1]; ++row) {
+      if (result.point_rule[static_cast<size_t>(row)] != GrowRule::bridge) continue;
+      bridged = true;
+      int64_t before = row - 1;
+      while (before > strands.offsets[s] + 1 &&
+             result.point_rule[static_cast<size_t>(before)] == GrowRule::bridge)
+        --before;
+      const Vec3 along = point_of(strands.points, before) - point_of(strands.points, before - 1);
+      if ((point_of(strands.points, row) - point_of(strands.points, row - 1)).dot(along) < 0)
+        back = true;
+    }
+    counts.bridged += bridged ? 1 : 0;
+    counts.bridged_back += back ? 1 : 0;
+    counts.ending_beyond += polar_in_card(0, last_of(strands, s)) > radians(60) ? 1 : 0;
+  }
+  return counts;
+}
+
+// Across a gap hair goes on ahead (GrowParams::bridge_max_angle_deg). A card lying beside
+// the end of a strand's own, its nearest rail 15 mm to the side and level with it, is not bridged
+// to (sideways across the hair); a card stacked 6 mm over the end of its own and starting 7 degrees
+// (13 mm) behind it is entered ahead, not by a bridge back to its start. With bridge_max_angle_deg
+// 0, as before, the strands hop sideways into the card beside and run back into the stacked one.
+TEST(StrandGrowing, BridgesGoOnAheadNotBackOrSidewaysToTheNextCard) {
+  GrowParams ahead = params_with(kStrandCount);
+  GrowParams to_start = ahead;
+  to_start.bridge_max_angle_deg = 0;
+
+  const GrowInput beside = card_and_next_card(0.039, kCardOffset, 45);
+  const NextCardCounts beside_ahead = next_card_counts(grow_strands(beside, ahead));
+  const NextCardCounts beside_start = next_card_counts(grow_strands(beside, to_start));
+  const GrowInput stacked = card_and_next_card(0, kCardOffset + 0.006, 38);
+  const NextCardCounts stacked_ahead = next_card_counts(grow_strands(stacked, ahead));
+  const NextCardCounts stacked_start = next_card_counts(grow_strands(stacked, to_start));
+  std::printf(
+      "[ grow     ] next card beside: %lld of %lld strands bridge into it (%lld to its start); "
+      "stacked behind: %lld of %lld reach it, %lld bridging back (to its start: %lld, %lld)\n",
+      static_cast<long long>(beside_ahead.bridged), static_cast<long long>(beside_ahead.rooted),
+      static_cast<long long>(beside_start.bridged),
+      static_cast<long long>(stacked_ahead.ending_beyond),
+      static_cast<long long>(stacked_ahead.rooted),
+      static_cast<long long>(stacked_ahead.bridged_back),
+      static_cast<long long>(stacked_start.ending_beyond),
+      static_cast<long long>(stacked_start.bridged_back));
+  ASSERT_GT(beside_ahead.rooted, 30);
+  EXPECT_EQ(beside_ahead.bridged, 0);
+  EXPECT_EQ(beside_ahead.ending_beyond, 0);
+  EXPECT_GT(beside_start.bridged, beside_start.rooted / 10);  // the old way hops sideways
+  ASSERT_GT(stacked_ahead.rooted, 30);
+  EXPECT_GT(stacked_ahead.ending_beyond, stacked_ahead.rooted * 3 / 4);
+  EXPECT_GE(stacked_ahead.ending_beyond, stacked_start.ending_beyond);
+  EXPECT_EQ(stacked_ahead.bridged_back, 0);
+  EXPECT_GT(stacked_start.bridged_back, stacked_start.ending_beyond / 2);
+}
+
 // With layers, the strands rooted under card 0 split between the two heights; without,
 // the field from the scalp keeps them all low.
 TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
