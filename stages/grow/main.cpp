@@ -44,6 +44,12 @@ int main(int argc, char** argv) {
   p.add("field_paint_seeds", params.field_paint_seeds,
         "faces whose painted strokes are clear seed their cluster's orientation field along "
         "them, signed by their group's input strands (false: the input strands alone)");
+  p.add("field_shell_seeds", params.field_shell_seeds,
+        "where the hair lies off the head beyond the field's band, its field is seeded under it "
+        "down to the body and the scalp under it carries roots (false: only near the strands)");
+  p.add("shell_max_height_h", params.shell_max_height_h,
+        "...under strand points at most this high above the body, in H",
+        hair::ParamRange::closed(0, 1));
   p.add("length_factor", params.length_factor,
         "the field phase ends at this many times the remaining length of the input strand "
         "nearest the root",

@@ -13,6 +13,7 @@
 #include "hair/extract/group_sense.h"
 #include "hair/extract/painted_streamlines.h"
 #include "hair/extract/rail_paint.h"
+#include "hair/extract/scalp.h"
 #include "hair/geom/point_index.h"
 #include "hair/mesh/mesh_checks.h"
 #include "hair/mesh/mesh_patches.h"
@@ -471,23 +472,6 @@ void decide_by_continuation(const Points3f& vertices, std::vector<RegionRails>& 
     if (decide_by_continuation_once(vertices, regions, radius) == 0) return;
 }
 
-/// Marks body triangles above the neck lying within `max_distance` of the hair mesh.
-std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
-                                     const Triangles3i& body_triangles, double neck_y,
-                                     const PolyMesh& hair_mesh, double max_distance) {
-  TriangleMeshDistance hair_distance(
-      hair_mesh.vertices, fan_triangulation(hair_mesh.face_offsets, hair_mesh.face_vertices));
-  std::vector<uint8_t> scalp(static_cast<size_t>(body_triangles.rows()), 0);
-#pragma omp parallel for schedule(static)
-  for (Eigen::Index t = 0; t < body_triangles.rows(); ++t) {
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k)
-      centroid += body_vertices.row(body_triangles(t, k)).cast<double>().transpose() / 3.0;
-    if (centroid.y() >= neck_y && hair_distance.is_within(centroid, max_distance)) scalp[t] = 1;
-  }
-  return scalp;
-}
-
 void append_rail(std::vector<Points3f>& polylines, const Points3f& vertices,
                  const std::vector<int32_t>& rail, std::vector<int32_t>& source_vertex) {
   Points3f points(static_cast<Eigen::Index>(rail.size()), 3);
@@ -749,12 +733,13 @@ struct PatchStreamlines {
   OrientationDecision decision;
 };
 
-/// Whether patch `p`'s rails would cross the hair its faces show: its faces' paint is
-/// clear on most of them, and the chosen rails of its regions run along that paint on
-/// less than `params.streamline_max_along_share` of their judged length.
-bool rails_cross_the_paint(const PatchTopology& topology,
-                           const std::vector<std::array<FamilyPaint, 2>>& paint,
-                           const std::vector<int>& along, const ExtractParams& params) {
+/// The share of patch `p`'s chosen rails' judged length that runs along its faces' paint
+/// (weighted by each region's quads), or nothing where the paint is clear on less than
+/// `params.along_paint_min_judged_share` of it.
+std::optional<double> rails_along_paint_share(const PatchTopology& topology,
+                                              const std::vector<std::array<FamilyPaint, 2>>& paint,
+                                              const std::vector<int>& along,
+                                              const ExtractParams& params) {
   double judged = 0, agreeing = 0, weight = 0;
   for (size_t r = 0; r < topology.regions.size(); ++r) {
     const FamilyPaint& chosen = paint[r][static_cast<size_t>(along[r])];
@@ -763,8 +748,9 @@ bool rails_cross_the_paint(const PatchTopology& topology,
     judged += quads * chosen.judged_share;
     agreeing += quads * chosen.judged_share * chosen.along_share;
   }
-  return weight > 0 && judged >= params.along_paint_min_judged_share * weight &&
-         agreeing < params.streamline_max_along_share * judged;
+  if (!(weight > 0) || judged < params.along_paint_min_judged_share * weight || !(judged > 0))
+    return std::nullopt;
+  return agreeing / judged;
 }
 
 /// Whether the median distance of the vertices of `faces` from the head is at most
@@ -849,15 +835,41 @@ class SegmentIndex {
   std::optional<PointIndex> index_;
 };
 
-/// The segments of a patch's decided rails, oriented root to tip.
-SegmentIndex decided_rail_segments(const Points3f& vertices,
+/// The segments of a patch's decided rails, oriented root to tip, where they run along the
+/// paint (within kFlowAgreementAngleDeg of the clear painted flow of a face they border):
+/// rails that cross the paint (rings round a cap, a grid that pays no heed to its hair) are
+/// not the hair, and the sense their vertex ids or parting give them says nothing of it.
+SegmentIndex decided_rail_segments(const PolyMesh& mesh, const PaintedFlow& flow,
+                                   const EdgeFaces& edge_faces,
                                    std::span<const RegionRails> patch_regions) {
   SegmentIndex segments;
+  const double min_cosine = std::cos(kFlowAgreementAngleDeg * std::numbers::pi / 180);
+  // Whether the rail edge (a, b) runs along the clear paint of a face it borders.
+  auto along_paint = [&](int32_t a, int32_t b) {
+    const Eigen::Vector3f edge = mesh.vertices.row(b) - mesh.vertices.row(a);
+    if (!(edge.norm() > 0)) return false;
+    for (int64_t face : edge_faces.faces(a, b)) {
+      if (face < 0) continue;
+      const auto f = static_cast<size_t>(face);
+      if (flow.coherence.size() > f && flow.coherence[f] >= kClearFlowCoherence &&
+          std::abs(edge.normalized().dot(flow.direction[f])) >= min_cosine)
+        return true;
+    }
+    return false;
+  };
+  // Each run of a rail's edges that run along the paint, in the rail's decided sense.
   auto add = [&](const std::vector<int32_t>& rail, bool reverse) {
-    Points3f points(static_cast<Eigen::Index>(rail.size()), 3);
-    for (size_t i = 0; i < rail.size(); ++i)
-      points.row(static_cast<Eigen::Index>(i)) = vertices.row(rail[i]);
-    segments.add(points, reverse ? -1 : 1, 0);
+    size_t run_start = 0;
+    for (size_t i = 1; i <= rail.size(); ++i) {
+      if (i < rail.size() && along_paint(rail[i - 1], rail[i])) continue;
+      if (i - run_start >= 2) {
+        Points3f points(static_cast<Eigen::Index>(i - run_start), 3);
+        for (size_t k = run_start; k < i; ++k)
+          points.row(static_cast<Eigen::Index>(k - run_start)) = mesh.vertices.row(rail[k]);
+        segments.add(points, reverse ? -1 : 1, 0);
+      }
+      run_start = i;
+    }
   };
   for (const RegionRails& region : patch_regions) {
     for (const auto& rail : region.open_rails) add(rail, region.decision && region.decision->reverse);
@@ -904,7 +916,8 @@ OrientationDecision own_orientation(const PaintedStreamline& line,
 /// whichever oriented most streamlines.
 PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int32_t patch,
                                       const StrandEndIndex& other_ends, const SegmentIndex& rails,
-                                      const OrientationDecision& rails_decision, double near_m,
+                                      const OrientationDecision& rails_decision,
+                                      bool rails_run_along_the_hair, double near_m,
                                       const TriangleMeshDistance& head_distance,
                                       const OrientationThresholds& thresholds) {
   constexpr double min_mean_cosine = 0.3;
@@ -917,7 +930,7 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
   // The patch's own decided rails, where they say which way the hair runs near a
   // streamline.
   auto follow_rails = [&] {
-    if (rails.empty()) return;
+    if (rails.empty() || !rails_run_along_the_hair) return;
     for (size_t i = 0; i < count; ++i) {
       if (sense[i] != 0) continue;
       int judged = 0;
@@ -1043,8 +1056,11 @@ PatchStreamlines oriented_streamlines(std::vector<PaintedStreamline> lines, int3
 void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>& topologies,
                    const std::vector<std::vector<int>>& along, std::vector<RegionRails>& regions,
                    std::vector<std::optional<std::vector<PaintedStreamline>>> traced,
-                   double near_m, const TriangleMeshDistance& head_distance,
-                   const OrientationThresholds& thresholds, ExtractResult& result) {
+                   const std::vector<std::optional<double>>& rails_along_share,
+                   const ExtractParams& params, double near_m,
+                   const TriangleMeshDistance& head_distance,
+                   const OrientationThresholds& thresholds, const EdgeFaces& edge_faces,
+                   ExtractResult& result) {
   const Points3f& vertices = result.hair_mesh.vertices;
   std::vector<Points3f> polylines;
   std::vector<int32_t> strand_group, strand_rail, source_vertex;
@@ -1083,9 +1099,13 @@ void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>&
     if (traced_patch) {
       PatchStreamlines oriented = oriented_streamlines(
           std::move(*traced[static_cast<size_t>(p)]), p, untraced_ends,
-          decided_rail_segments(vertices, std::span<const RegionRails>(regions).subspan(
-                                              first_region, next_region - first_region)),
-          group_decision, near_m, head_distance, thresholds);
+          decided_rail_segments(result.hair_mesh, result.painted_flow, edge_faces,
+                                std::span<const RegionRails>(regions).subspan(
+                                    first_region, next_region - first_region)),
+          group_decision,
+          rails_along_share[static_cast<size_t>(p)].value_or(0) >=
+              params.streamline_rails_min_along_share,
+          near_m, head_distance, thresholds);
       for (Points3f& polyline : oriented.polylines) {
         source_vertex.insert(source_vertex.end(), static_cast<size_t>(polyline.rows()), -1);
         polylines.push_back(std::move(polyline));
@@ -1187,10 +1207,15 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   // keep their rails: the strokes painted on a braid's pieces twist around them, while
   // the bundle runs along the piece.
   std::vector<std::optional<std::vector<PaintedStreamline>>> traced(topologies.size());
+  std::vector<std::optional<double>> rails_along_share(topologies.size());
+  for (int32_t p = 0; p < patches.patch_count(); ++p)
+    rails_along_share[static_cast<size_t>(p)] =
+        rails_along_paint_share(topologies[p], paint[p], along[p], params);
 #pragma omp parallel for schedule(dynamic)
   for (int32_t p = 0; p < patches.patch_count(); ++p)
     if (patch_kind(topologies[p], along[p]) != PatchKind::tube &&
-        rails_cross_the_paint(topologies[p], paint[p], along[p], params) &&
+        rails_along_share[static_cast<size_t>(p)] &&
+        *rails_along_share[static_cast<size_t>(p)] < params.streamline_max_along_share &&
         lies_on_the_head(result.hair_mesh, patches.patch_faces[p], head_distance,
                          params.streamline_max_head_distance_h * head_height_m)) {
       StreamlineParams streamline_params;
@@ -1203,12 +1228,16 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   for (int32_t p = 0; p < patches.patch_count(); ++p)
     if (traced[static_cast<size_t>(p)]) {
       ++result.stats.patches_traced_along_paint;
-      spdlog::debug("{}: patch {} ({} faces) traced along its paint: {} strands", hair_file, p,
-                    patches.patch_faces[p].size(), traced[static_cast<size_t>(p)]->size());
+      spdlog::debug(
+          "{}: patch {} ({} faces, rails along the paint on {:.2f} of their length) traced along "
+          "its paint: {} strands",
+          hair_file, p, patches.patch_faces[p].size(), *rails_along_share[static_cast<size_t>(p)],
+          traced[static_cast<size_t>(p)]->size());
     }
   decide_directions(vertices, regions, thresholds, params, head_height_m, result.stats);
-  group_strands(patches, topologies, along, regions, std::move(traced),
-                params.continuation_radius_h * head_height_m, head_distance, thresholds, result);
+  group_strands(patches, topologies, along, regions, std::move(traced), rails_along_share, params,
+                params.continuation_radius_h * head_height_m, head_distance, thresholds, edge_faces,
+                result);
   // Last, a strand that runs against the rest of its group turns round (the hair a patch
   // shows flows smoothly across it), within twice the continuation radius.
   GroupSenseParams sense;
@@ -1216,9 +1245,9 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   result.stats.strands_turned_to_their_group =
       turn_strands_against_their_group(result.strands, result.group_first_strand, sense);
 
-  result.scalp_triangle =
-      scalp_triangles(result.body_vertices, result.body_triangles, result.head.neck_y,
-                      result.hair_mesh, params.scalp_distance_h * head_height_m);
+  result.scalp_triangle = scalp_triangles(
+      result.body_vertices, result.body_triangles, result.head.neck_y, result.hair_mesh,
+      params.scalp_distance_h * head_height_m, params.scalp_under_hair_h * head_height_m);
   return result;
 }
 

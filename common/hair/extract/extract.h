@@ -35,6 +35,11 @@ struct ExtractParams {
   /// A patch whose chosen rails run along its clear paint on less than this share of
   /// their length is cut into strands traced along the paint instead.
   double streamline_max_along_share = 0.8;
+  /// A traced patch's streamlines take their sense from its rails (their vertex ids,
+  /// their parting, their height) only where those rails run along the paint on at least
+  /// this share of their judged length: rails that mostly cross the hair (rings round a
+  /// cap, a grid that pays no heed to it) say which way they run, not the hair.
+  double streamline_rails_min_along_share = 0.5;
   /// ...when it lies on the head: the median distance of its vertices from the head at
   /// most this, in H (caps and wigs; hanging cards and braid pieces keep their rails).
   double streamline_max_head_distance_h = 0.1;
@@ -73,6 +78,12 @@ struct ExtractParams {
   /// Body triangles above the neck within this distance of the hair mesh, as a
   /// fraction of H, form the scalp.
   double scalp_distance_h = 0.06;
+  /// ...and so do those under hair that stands off the head up to this far (H): hair
+  /// within scalp_distance_h of the line along the triangle's outward normal (a bob's
+  /// shell 2-4 cm off the back of the head is rooted all over the scalp under it), except
+  /// where the triangle faces forward (normal's +Z above 0.5: hair hanging over the face is
+  /// rooted above it). 0: only the distance decides.
+  double scalp_under_hair_h = 0.1;
   /// How the painted flow is read off the mesh's textures (painted_flow.h).
   PaintedFlowParams painted_flow;
 };

@@ -37,6 +37,11 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "a patch whose rails run along its clear paint on less than this share of their "
              "length is cut into strands traced along the paint instead",
              ParamRange::closed(0, 1));
+  params.add("streamline_rails_min_along_share", p.streamline_rails_min_along_share,
+             "a traced patch's streamlines take their sense from its rails only where those run "
+             "along the paint on at least this share of their length (rails that mostly cross "
+             "the hair say nothing of which way it runs)",
+             ParamRange::closed(0, 1));
   params.add("streamline_max_head_distance_h", p.streamline_max_head_distance_h,
              "...when it lies on the head: the median distance of its vertices from the head "
              "at most this, in H (caps and wigs; hanging cards and braid pieces keep their "
@@ -96,6 +101,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "body triangles above the neck within this distance of the hair mesh, in H, "
              "form the scalp",
              ParamRange::above(0));
+  params.add("scalp_under_hair_h", p.scalp_under_hair_h,
+             "...and so do those not facing forward under hair that stands off the head up to "
+             "this far along their normal, in H (0: only the distance decides)",
+             ParamRange::closed(0, 1));
   params.add("flow_min_alpha", p.painted_flow.min_alpha,
              "painted flow: texels with at least this alpha are painted hair",
              ParamRange::closed(0, 1));

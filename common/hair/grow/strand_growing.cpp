@@ -20,6 +20,7 @@
 #include "hair/grow/card_surfaces.h"
 #include "hair/grow/orientation_field.h"
 #include "hair/grow/painted_field_seeds.h"
+#include "hair/grow/shell_field_seeds.h"
 #include "hair/grow/surface_sampling.h"
 
 namespace hair {
@@ -916,6 +917,56 @@ double flagged_area_m2(const GrowInput& input, const std::vector<uint8_t>& flags
   return area_m2;
 }
 
+/// The seeds under the root-carrying strands of `cluster` (-1: of every cluster) where
+/// they lie off the head (GrowParams::field_shell_seeds, shell_field_seeds.h).
+StrandSet shell_seeds(const GrowInput& input, const GrowingContext& context,
+                      const GrowParams& params, const TriangleMeshDistance& body,
+                      const PointIndex& hair, int32_t cluster) {
+  const StrandSet& strands = input.input_strands;
+  std::vector<Points3f> over;
+  for (int64_t s = 0; s < strands.strand_count(); ++s)
+    if (context.carries_roots(s) && (cluster < 0 || context.cluster_of_strand(s) == cluster))
+      over.emplace_back(strands.strand(s));
+  ShellSeedParams shell_params;
+  shell_params.spacing_m = params.field_band_h * input.head_height_m;
+  shell_params.max_height_m = params.shell_max_height_h * input.head_height_m;
+  // Over the scalp and the neck under it: no lower than the scalp's lowest triangle
+  // centre by more than max_height_m.
+  double lowest_scalp_y = std::numeric_limits<double>::infinity();
+  for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
+    if (!input.scalp_triangle[static_cast<size_t>(t)]) continue;
+    double centre_y = 0;
+    for (int k = 0; k < 3; ++k) centre_y += input.body_vertices(input.body_triangles(t, k), 1);
+    lowest_scalp_y = std::min(lowest_scalp_y, centre_y / 3);
+  }
+  shell_params.min_foot_y_m = lowest_scalp_y - shell_params.max_height_m;
+  return seeds_under_strands(over, body, hair, shell_params);
+}
+
+/// Flags in `covered` the scalp triangles whose centre lies within scalp_cover_h of a seed
+/// of the lowest level under the hair (shell_seeds()): the scalp under a shell of hair.
+void cover_scalp_under_shells(const GrowInput& input, const GrowParams& params,
+                              const StrandSet& seeds, std::vector<uint8_t>& covered) {
+  const auto& level = std::get<std::vector<int32_t>>(seeds.strand_attributes.at("level"));
+  std::vector<Eigen::RowVector3f> lowest;
+  for (int64_t s = 0; s < seeds.strand_count(); ++s)
+    if (level[static_cast<size_t>(s)] == 0)
+      for (int64_t row = seeds.offsets[s]; row < seeds.offsets[s + 1]; ++row)
+        lowest.push_back(seeds.points.row(row));
+  if (lowest.empty()) return;
+  Points3f points(static_cast<Eigen::Index>(lowest.size()), 3);
+  for (size_t k = 0; k < lowest.size(); ++k) points.row(static_cast<Eigen::Index>(k)) = lowest[k];
+  const PointIndex index(points);
+  const auto cover_m = static_cast<float>(params.scalp_cover_h * input.head_height_m);
+  for (Eigen::Index t = 0; t < input.body_triangles.rows(); ++t) {
+    if (!input.scalp_triangle[static_cast<size_t>(t)] || covered[static_cast<size_t>(t)]) continue;
+    Eigen::Vector3f centre = Eigen::Vector3f::Zero();
+    for (int k = 0; k < 3; ++k)
+      centre += input.body_vertices.row(input.body_triangles(t, k)).transpose();
+    if (!index.within(centre / 3, cover_m).empty()) covered[static_cast<size_t>(t)] = 1;
+  }
+}
+
 /// The seeds the painted faces give the fields (GrowParams::field_paint_seeds): of the
 /// groups whose strands seed them, sampled at half a voxel's edge, so that a
 /// face adds to each voxel it covers about what a strand through it does.
@@ -979,6 +1030,30 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   }
   const GrowingContext& context = *context_ptr;
   result.roots_from_any_type = context.any_type_roots();
+  // The body's distance, for the seeds under hair that lies off the head.
+  std::unique_ptr<TriangleMeshDistance> own_body;
+  const TriangleMeshDistance* body_distance = nullptr;
+  std::unique_ptr<PointIndex> seeding_hair;  // the points of the root-carrying strands
+  if (params.field_shell_seeds) {
+    std::vector<Eigen::RowVector3f> rows;
+    for (int64_t s = 0; s < input.input_strands.strand_count(); ++s)
+      if (context.carries_roots(s))
+        for (int64_t row = input.input_strands.offsets[s]; row < input.input_strands.offsets[s + 1];
+             ++row)
+          rows.push_back(input.input_strands.points.row(row));
+    Points3f points(static_cast<Eigen::Index>(rows.size()), 3);
+    for (size_t k = 0; k < rows.size(); ++k) points.row(static_cast<Eigen::Index>(k)) = rows[k];
+    seeding_hair = std::make_unique<PointIndex>(points);
+    if (context.layered()) {
+      body_distance = &context.body_distance();
+    } else {
+      own_body = std::make_unique<TriangleMeshDistance>(input.body_vertices, input.body_triangles);
+      body_distance = own_body.get();
+    }
+    cover_scalp_under_shells(input, params,
+                             shell_seeds(input, context, params, *body_distance, *seeding_hair, -1),
+                             covered);
+  }
   for (uint8_t flag : covered) result.scalp_triangles_used += flag;
   const StrandSet& strands = input.input_strands;
   const double standing_cover_m = std::min(params.standing_cover_h, params.scalp_cover_h) * h;
@@ -1029,6 +1104,10 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     for (int64_t s = 0; s < paint_seeds.strand_count(); ++s)
       if (context.cluster_of_group(seed_group[static_cast<size_t>(s)]) == c)
         seeding.emplace_back(paint_seeds.strand(s));
+    if (body_distance) {
+      const StrandSet under = shell_seeds(input, context, params, *body_distance, *seeding_hair, c);
+      for (int64_t s = 0; s < under.strand_count(); ++s) seeding.emplace_back(under.strand(s));
+    }
     std::vector<int64_t> ids(seeding.size());
     std::iota(ids.begin(), ids.end(), int64_t{0});
     fields[static_cast<size_t>(c)] =

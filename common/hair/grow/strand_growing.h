@@ -46,6 +46,14 @@ struct GrowParams {
   /// strands (painted_field_seeds.h): between a cap's streamlines, around its crown whorl,
   /// the field follows the paint instead of an average of the lines on either side.
   bool field_paint_seeds = true;
+  /// Where the hair lies off the head farther than the field's band (a bob's shell, a cap
+  /// puffed out over the crown), its cluster's field is seeded under it too, level by level
+  /// down to the body with the direction of the hair above (shell_field_seeds.h), and the
+  /// scalp under it carries roots: the hair is rooted under the shell and rises to it,
+  /// instead of growing only from where the mesh comes down to the head.
+  bool field_shell_seeds = true;
+  /// ...under the points of root-carrying strands at most this high above the body.
+  double shell_max_height_h = 0.3;
   /// The field phase ends once a strand is this many times as long as what remains of the
   /// input strand nearest its root (from that strand's nearest point to its tip).
   double length_factor = 1.0;

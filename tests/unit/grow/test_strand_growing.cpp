@@ -829,6 +829,83 @@ TEST(StrandGrowing, BridgesGoOnAheadNotBackOrSidewaysToTheNextCard) {
   EXPECT_GT(stacked_start.bridged_back, stacked_start.ending_beyond / 2);
 }
 
+/// Height over the sphere of a shell card at polar angle `polar_deg`: 4 mm at its root
+/// (10 degrees), rising smoothly to 3.5 cm by 40 degrees and staying so.
+double shell_height_m(double polar_deg) {
+  const double t = std::clamp((polar_deg - 10) / 30, 0.0, 1.0);
+  return 0.004 + 0.031 * t * t * (3 - 2 * t);
+}
+
+/// A card down the back of the head (card 2's frame, azimuth 180 degrees), five rails 6 mm
+/// apart from polar 10 to 100 degrees, standing off the head as shell_height_m() says: a
+/// bob's shell. Root-free, one cluster; the scalp every triangle over kScalpAboveCentre.
+GrowInput shell_card_input() {
+  GrowInput input = head_sphere_input("sphere");
+  const CardFrame frame = card_frame(2);
+  std::vector<Points3f> rails;
+  for (int k = 0; k < 5; ++k) {
+    const double lateral = 0.006 * k - 0.012;
+    Points3f rail(kRailPoints, 3);
+    for (int i = 0; i < kRailPoints; ++i) {
+      const double polar_deg = 10 + 90.0 * i / (kRailPoints - 1);
+      const double r = kRadius + shell_height_m(polar_deg);
+      const double rho = std::sqrt(r * r - lateral * lateral);
+      const Vec3 p =
+          kCentre +
+          rho * (std::sin(radians(polar_deg)) * frame.out + std::cos(radians(polar_deg)) * kUp) +
+          lateral * frame.side;
+      rail.row(i) = p.transpose().cast<float>();
+    }
+    rails.push_back(rail);
+  }
+  input.input_strands = strand_set_from_polylines(rails);
+  input.input_strands.strand_attributes["group"] = std::vector<int32_t>(5, 0);
+  input.group_type = {GroupType::root_free};
+  input.group_cluster = {0};
+  return input;
+}
+
+// A shell of hair 3.5 cm off the back of the head (GrowParams::field_shell_seeds): the
+// scalp under it carries roots (where the field reaches it) and their strands rise to the
+// shell and run down it to its end (within 8 degrees, 1.9 cm: they pass it by up to 7).
+// Without the seeds under it, roots lie only where the card comes down to the head (its
+// first 1.4 cm), and nothing grows from under the shell.
+TEST(StrandGrowing, HairStandingOffTheHeadIsRootedUnderItAndRisesToIt) {
+  const GrowInput input = shell_card_input();
+  GrowParams with = params_with(kStrandCount);
+  GrowParams without = with;
+  without.field_shell_seeds = false;
+  const GrowResult seeded = grow_strands(input, with);
+  const GrowResult bare = grow_strands(input, without);
+  const Vec3 card_end =
+      point_of(input.input_strands.points, input.input_strands.offsets[3] - 1);  // middle rail
+  // Strands rooted under the shell proper: 30 degrees down or more, within the card's width.
+  const auto under_shell = [](const Vec3& root) {
+    return polar_in_card(2, root) >= radians(30) && std::abs(lateral_in_card(2, root)) <= 0.012;
+  };
+  int64_t seeded_under = 0, reaching_end = 0, bare_under = 0;
+  for (int64_t s = 0; s < seeded.strands.strand_count(); ++s) {
+    if (!under_shell(root_of(seeded.strands, s))) continue;
+    ++seeded_under;
+    const Vec3 last = last_of(seeded.strands, s);
+    if (std::abs(polar_in_card(2, last) - radians(100)) < radians(8) &&
+        std::abs((last - kCentre).norm() - (card_end - kCentre).norm()) < 0.01)
+      ++reaching_end;
+  }
+  for (int64_t s = 0; s < bare.strands.strand_count(); ++s)
+    if (under_shell(root_of(bare.strands, s))) ++bare_under;
+  std::printf(
+      "[ grow     ] shell 3.5 cm off: %lld scalp triangles carry roots (%lld without the seeds "
+      "under it); %lld strands rooted under it (%lld without), %lld of them ending at its end\n",
+      static_cast<long long>(seeded.scalp_triangles_used),
+      static_cast<long long>(bare.scalp_triangles_used), static_cast<long long>(seeded_under),
+      static_cast<long long>(bare_under), static_cast<long long>(reaching_end));
+  EXPECT_GT(seeded.scalp_triangles_used, 2 * bare.scalp_triangles_used);
+  EXPECT_EQ(bare_under, 0);
+  EXPECT_GT(seeded_under, 20);
+  EXPECT_GT(reaching_end, seeded_under * 8 / 10);
+}
+
 // With layers, the strands rooted under card 0 split between the two heights; without,
 // the field from the scalp keeps them all low.
 TEST(StrandGrowing, StrandsSpreadOverTheLayersOfACluster) {
