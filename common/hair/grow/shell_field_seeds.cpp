@@ -54,10 +54,10 @@ StrandSet seeds_under_strands(const std::vector<Points3f>& strands,
                               const ShellSeedParams& params) {
   const auto inner_m = static_cast<float>(0.5 * params.spacing_m);
   std::vector<Points3f> polylines;
-  std::vector<int32_t> level_of;
+  std::vector<int32_t> level_of, strand_of;
   std::vector<Eigen::RowVector3f> run;
-  for (const Points3f& strand : strands) {
-    const std::vector<PointOverBody> over = points_over_body(strand, body, params);
+  for (size_t index = 0; index < strands.size(); ++index) {
+    const std::vector<PointOverBody> over = points_over_body(strands[index], body, params);
     int top = 0;
     for (const PointOverBody& o : over) top = std::max(top, o.levels);
     for (int level = 0; level < top; ++level) {
@@ -69,6 +69,7 @@ StrandSet seeds_under_strands(const std::vector<Points3f>& strands,
           for (size_t k = 0; k < run.size(); ++k) points.row(static_cast<Eigen::Index>(k)) = run[k];
           polylines.push_back(std::move(points));
           level_of.push_back(level);
+          strand_of.push_back(static_cast<int32_t>(index));
         }
         run.clear();
       };
@@ -89,6 +90,7 @@ StrandSet seeds_under_strands(const std::vector<Points3f>& strands,
   }
   StrandSet seeds = strand_set_from_polylines(polylines);
   seeds.strand_attributes["level"] = level_of;
+  seeds.strand_attributes["strand"] = strand_of;
   return seeds;
 }
 

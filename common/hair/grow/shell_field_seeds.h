@@ -42,7 +42,8 @@ struct ShellSeedParams {
 /// body's normal at its nearest body point (the direction from that point to it) down to
 /// the level's height, and left out where a point of `hair` (the input strands that seed
 /// fields, indexed) lies within half a spacing of it: an inner layer of hair under the
-/// shell seeds its own direction there. Strand attribute "level" (int32, 0 the lowest).
+/// shell seeds its own direction there. Strand attributes "level" (int32, 0 the lowest)
+/// and "strand" (int32, the index in `strands` of the strand it lies under).
 /// Deterministic: in strand order, then level, then run.
 StrandSet seeds_under_strands(const std::vector<Points3f>& strands,
                               const TriangleMeshDistance& body, const PointIndex& hair,

@@ -917,16 +917,20 @@ double flagged_area_m2(const GrowInput& input, const std::vector<uint8_t>& flags
   return area_m2;
 }
 
-/// The seeds under the root-carrying strands of `cluster` (-1: of every cluster) where
-/// they lie off the head (GrowParams::field_shell_seeds, shell_field_seeds.h).
+/// The seeds under the root-carrying strands where they lie off the head
+/// (GrowParams::field_shell_seeds, shell_field_seeds.h), with strand attribute "cluster"
+/// (int32), that of the strand each lies under.
 StrandSet shell_seeds(const GrowInput& input, const GrowingContext& context,
                       const GrowParams& params, const TriangleMeshDistance& body,
-                      const PointIndex& hair, int32_t cluster) {
+                      const PointIndex& hair) {
   const StrandSet& strands = input.input_strands;
   std::vector<Points3f> over;
+  std::vector<int32_t> over_cluster;
   for (int64_t s = 0; s < strands.strand_count(); ++s)
-    if (context.carries_roots(s) && (cluster < 0 || context.cluster_of_strand(s) == cluster))
+    if (context.carries_roots(s)) {
       over.emplace_back(strands.strand(s));
+      over_cluster.push_back(context.cluster_of_strand(s));
+    }
   ShellSeedParams shell_params;
   shell_params.spacing_m = params.field_band_h * input.head_height_m;
   shell_params.max_height_m = params.shell_max_height_h * input.head_height_m;
@@ -940,7 +944,13 @@ StrandSet shell_seeds(const GrowInput& input, const GrowingContext& context,
     lowest_scalp_y = std::min(lowest_scalp_y, centre_y / 3);
   }
   shell_params.min_foot_y_m = lowest_scalp_y - shell_params.max_height_m;
-  return seeds_under_strands(over, body, hair, shell_params);
+  StrandSet seeds = seeds_under_strands(over, body, hair, shell_params);
+  const auto& under = std::get<std::vector<int32_t>>(seeds.strand_attributes.at("strand"));
+  std::vector<int32_t> cluster(under.size());
+  for (size_t k = 0; k < under.size(); ++k)
+    cluster[k] = over_cluster[static_cast<size_t>(under[k])];
+  seeds.strand_attributes["cluster"] = std::move(cluster);
+  return seeds;
 }
 
 /// Flags in `covered` the scalp triangles whose centre lies within scalp_cover_h of a seed
@@ -1031,9 +1041,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   const GrowingContext& context = *context_ptr;
   result.roots_from_any_type = context.any_type_roots();
   // The body's distance, for the seeds under hair that lies off the head.
-  std::unique_ptr<TriangleMeshDistance> own_body;
-  const TriangleMeshDistance* body_distance = nullptr;
-  std::unique_ptr<PointIndex> seeding_hair;  // the points of the root-carrying strands
+  StrandSet under_shells;
   if (params.field_shell_seeds) {
     std::vector<Eigen::RowVector3f> rows;
     for (int64_t s = 0; s < input.input_strands.strand_count(); ++s)
@@ -1043,16 +1051,14 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
           rows.push_back(input.input_strands.points.row(row));
     Points3f points(static_cast<Eigen::Index>(rows.size()), 3);
     for (size_t k = 0; k < rows.size(); ++k) points.row(static_cast<Eigen::Index>(k)) = rows[k];
-    seeding_hair = std::make_unique<PointIndex>(points);
-    if (context.layered()) {
-      body_distance = &context.body_distance();
-    } else {
+    const PointIndex seeding_hair(points);  // the points of the root-carrying strands
+    std::unique_ptr<TriangleMeshDistance> own_body;
+    if (!context.layered())
       own_body = std::make_unique<TriangleMeshDistance>(input.body_vertices, input.body_triangles);
-      body_distance = own_body.get();
-    }
-    cover_scalp_under_shells(input, params,
-                             shell_seeds(input, context, params, *body_distance, *seeding_hair, -1),
-                             covered);
+    under_shells =
+        shell_seeds(input, context, params, context.layered() ? context.body_distance() : *own_body,
+                    seeding_hair);
+    cover_scalp_under_shells(input, params, under_shells, covered);
   }
   for (uint8_t flag : covered) result.scalp_triangles_used += flag;
   const StrandSet& strands = input.input_strands;
@@ -1104,9 +1110,12 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     for (int64_t s = 0; s < paint_seeds.strand_count(); ++s)
       if (context.cluster_of_group(seed_group[static_cast<size_t>(s)]) == c)
         seeding.emplace_back(paint_seeds.strand(s));
-    if (body_distance) {
-      const StrandSet under = shell_seeds(input, context, params, *body_distance, *seeding_hair, c);
-      for (int64_t s = 0; s < under.strand_count(); ++s) seeding.emplace_back(under.strand(s));
+    if (params.field_shell_seeds) {
+      const auto& under_cluster =
+          std::get<std::vector<int32_t>>(under_shells.strand_attributes.at("cluster"));
+      for (int64_t s = 0; s < under_shells.strand_count(); ++s)
+        if (under_cluster[static_cast<size_t>(s)] == c)
+          seeding.emplace_back(under_shells.strand(s));
     }
     std::vector<int64_t> ids(seeding.size());
     std::iota(ids.begin(), ids.end(), int64_t{0});

@@ -73,6 +73,8 @@ TEST(ShellFieldSeeds, HairOffTheHeadIsSeededLevelByLevelDownToIt) {
   const StrandSet seeds = seeds_under_strands(strands, f.body, hair, f.params);
   const auto& level = std::get<std::vector<int32_t>>(seeds.strand_attributes.at("level"));
   ASSERT_EQ(seeds.strand_count(), 2);
+  EXPECT_EQ(std::get<std::vector<int32_t>>(seeds.strand_attributes.at("strand")),
+            (std::vector<int32_t>{0, 0}));
   for (int64_t s = 0; s < 2; ++s) {
     EXPECT_EQ(level[static_cast<size_t>(s)], s);
     const double height_m = 0.014 * (0.5 + static_cast<double>(s));
