@@ -112,6 +112,7 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["ringlet_radius_m"] = c.ringlet_radius_m;
     item["ringlet_pitch_m"] = c.ringlet_pitch_m;
     item["hang_volume_m"] = c.hang_volume_m;
+    item["rooted_under_volume"] = c.rooted_under_volume;
     item["tube_sides"] = c.tube_sides;
     item["cap_volume_m"] = c.cap_volume_m;
     item["cap_drape"] = c.cap_drape;
@@ -219,6 +220,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
                           "cap_volume_m",
                           "cap_drape",
                           "hang_volume_m",
+                          "rooted_under_volume",
                           "braid_lift_m",
                           "braid_tip_width_share",
                           "braid_cards_per_lobe"});
@@ -264,6 +266,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
       read_key(item, where, "tube_sides", c.tube_sides);
       read_key(item, where, "cap_volume_m", c.cap_volume_m);
       read_key(item, where, "hang_volume_m", c.hang_volume_m);
+      read_key(item, where, "rooted_under_volume", c.rooted_under_volume);
       read_key(item, where, "cap_drape", c.cap_drape);
       read_key(item, where, "braid_lift_m", c.braid_lift_m);
       read_key(item, where, "braid_tip_width_share", c.braid_tip_width_share);
@@ -355,6 +358,8 @@ void check_spec(const HairStyleSpec& spec) {
     require_range(where + "braid_tip_width_share", c.braid_tip_width_share, 0.1, 1.0);
     require_range(where + "braid_cards_per_lobe", c.braid_cards_per_lobe, 1, 12);
     if (c.tube_sides != 0) require_range(where + "tube_sides", c.tube_sides, 3, 32);
+    if (c.rooted_under_volume && c.kind != ComponentSpec::Kind::normal)
+      throw Error::usage(where + "rooted_under_volume: for normal hair only (kind \"normal\")");
   }
   const DefectSpec& d = spec.defects;
   require_range("defects.rails_min", d.rails_min, 2, 8);

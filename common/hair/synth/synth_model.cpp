@@ -1180,6 +1180,20 @@ HairStyle style_at(const Stream& stream, double along_m) {
   return style;
 }
 
+/// Appends the true strand `points` of `stream` (at arc lengths `along_m` of it, for their
+/// styles); nothing for fewer than two points.
+void append_true_strand(const Stream& stream, int32_t stream_id, const std::vector<Vec3>& points,
+                        const std::vector<double>& along_m, std::vector<Points3f>& polylines,
+                        std::vector<int32_t>& strand_stream, std::vector<HairStyle>& point_style) {
+  if (points.size() < 2) return;
+  Points3f polyline(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t i = 0; i < points.size(); ++i)
+    polyline.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
+  polylines.push_back(std::move(polyline));
+  strand_stream.push_back(stream_id);
+  for (size_t i = 0; i < points.size(); ++i) point_style.push_back(style_at(stream, along_m[i]));
+}
+
 /// Dense true strands of a stream: `count` strands at fixed places across the stream's
 /// width and thickness (a third of its width; on the scalp: from half to 1.5 times its
 /// lift; a tube: over its round section), following its centre; the style of every point is
@@ -1204,14 +1218,74 @@ void add_true_strands(const Stream& stream, int32_t stream_id, const Head& head,
               : on_scalp(head, stream.points[i] + across,
                          stream.scalp_lift_m[i] * (1.0 + 3.0 * v)));
     }
-    if (points.size() < 2) continue;
-    Points3f polyline(static_cast<Eigen::Index>(points.size()), 3);
-    for (size_t i = 0; i < points.size(); ++i)
-      polyline.row(static_cast<Eigen::Index>(i)) = points[i].cast<float>().transpose();
-    polylines.push_back(std::move(polyline));
-    strand_stream.push_back(stream_id);
-    for (size_t i = 0; i < points.size(); ++i)
-      point_style.push_back(style_at(stream, stream.along_m[i]));
+    append_true_strand(stream, stream_id, points, stream.along_m, polylines, strand_stream,
+                       point_style);
+  }
+}
+
+/// True strands rooted on the scalp under `stream` (ComponentSpec::rooted_under_volume). A
+/// root's place along the stream, s0, is drawn evenly over the stretches whose foot (the body
+/// point nearest them, `lift_m` out) lies on the scalp above the hairline; its place across the
+/// stream's width and thickness as add_true_strands() draws one. The strand leaves the foot
+/// of that place at s0 and rises to the place itself over twice its height there (each point
+/// the smoothstep blend of the card point and its foot, so that it leaves the scalp along the
+/// card), then runs on along the stream to its (trimmed) tip. `count` strands for a stream
+/// over the scalp all along, in proportion for one over it on part of its length.
+void add_true_strands_under_volume(const Stream& stream, int32_t stream_id, const Head& head,
+                                   int count, double lift_m, Rng& rng,
+                                   std::vector<Points3f>& polylines,
+                                   std::vector<int32_t>& strand_stream,
+                                   std::vector<HairStyle>& point_style) {
+  const size_t n = stream.points.size();
+  if (n < 2 || !(stream.length_m() > 0)) return;
+  auto foot_of = [&](const Vec3& point) { return on_scalp(head, point, lift_m); };
+  auto over_scalp = [&](const Vec3& point) {
+    const Vec3 foot = (foot_of(point) - head.centre).normalized();
+    const double polar_deg = std::acos(std::clamp(foot.y(), -1.0, 1.0)) * 180.0 / kPi;
+    return polar_deg <= hairline_polar_deg(std::atan2(foot.x(), foot.z()) * 180.0 / kPi);
+  };
+  // covered_m[i]: the length of the stretches over the scalp up to point i.
+  std::vector<double> covered_m(n, 0.0);
+  bool previous_over = over_scalp(stream.points[0]);
+  for (size_t i = 1; i < n; ++i) {
+    const bool over = over_scalp(stream.points[i]);
+    covered_m[i] = covered_m[i - 1] +
+                   (previous_over && over ? stream.along_m[i] - stream.along_m[i - 1] : 0.0);
+    previous_over = over;
+  }
+  const double covered_total_m = covered_m.back();
+  const int under = static_cast<int>(std::lround(count * covered_total_m / stream.length_m()));
+  for (int j = 0; j < under; ++j) {
+    const double u = rng.uniform(-0.5, 0.5), v = rng.uniform(-0.5, 0.5) / 3.0;
+    const double end = stream.length_m() * (stream.trim_tips ? rng.uniform(0.9, 1.0) : 1.0);
+    const double drawn_m = rng.uniform(0, covered_total_m);
+    size_t i = static_cast<size_t>(std::upper_bound(covered_m.begin(), covered_m.end(), drawn_m) -
+                                   covered_m.begin());
+    i = std::clamp<size_t>(i, 1, n - 1);
+    const double span_m = covered_m[i] - covered_m[i - 1];
+    const double start_m =
+        stream.along_m[i - 1] + (span_m > 0 ? (drawn_m - covered_m[i - 1]) / span_m : 0.0) *
+                                    (stream.along_m[i] - stream.along_m[i - 1]);
+    auto place = [&](double along_m) {
+      return Vec3(stream.point_at(along_m) +
+                  stream.width_at(along_m) *
+                      (u * stream.across_at(along_m) + v * stream.normal_at(along_m)));
+    };
+    const Vec3 root = foot_of(place(start_m));
+    const double climb_m = std::max(2.0 * (place(start_m) - root).norm(), kStep_m);
+    if (start_m + climb_m >= end) continue;
+    std::vector<Vec3> points{root};
+    std::vector<double> along_m{start_m};
+    for (size_t k = 0; k < n && stream.along_m[k] <= end; ++k) {
+      if (stream.along_m[k] <= start_m) continue;
+      const Vec3 card = place(stream.along_m[k]);
+      const double t = std::clamp((stream.along_m[k] - start_m) / climb_m, 0.0, 1.0);
+      const double weight = t * t * (3 - 2 * t);
+      const Vec3 foot = foot_of(card);
+      points.push_back(weight >= 1 ? card : Vec3(foot + weight * (card - foot)));
+      along_m.push_back(stream.along_m[k]);
+    }
+    append_true_strand(stream, stream_id, points, along_m, polylines, strand_stream, point_style);
   }
 }
 
@@ -1384,6 +1458,7 @@ HairStyleSpec painted_preset(const std::string& name) {
     normal.strip_width_m = 0.06;
     normal.polar_max_deg = 45;  // roots round the crown: the cards cover the head
     normal.hang_volume_m = 0.012;  // standing off the head below the crown, as bob01's and bob02's
+    normal.rooted_under_volume = true;  // and the scalp under the cards carries hair
     // Parted in the middle: no card roots over the face (it would hang over it).
     ComponentSpec left = normal, right = normal;
     left.azimuth_min_deg = 45;
@@ -1712,6 +1787,14 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     add_true_strands(stream, stream_id, head, strands_per_stream, strand_rng, strand_polylines,
                      strand_stream, model.strand_point_style);
   }
+  // Hair rooted under cards that stand off the head, from a generator of its own, after every
+  // other true strand: those stay as they are.
+  Rng under_rng(seed ^ 0x27d4eb2fu);
+  for (size_t s = 0; s < streams.size(); ++s)
+    if (spec.components[static_cast<size_t>(streams[s].component)].rooted_under_volume)
+      add_true_strands_under_volume(streams[s], static_cast<int32_t>(s), head, strands_per_stream,
+                                    spec.defects.scalp_lift_m, under_rng, strand_polylines,
+                                    strand_stream, model.strand_point_style);
   for (size_t c = 0; c < ring_streams.size(); ++c) {
     const std::vector<int32_t>& ids = ring_streams[c];
     if (ids.empty()) continue;

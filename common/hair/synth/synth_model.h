@@ -114,6 +114,13 @@ struct ComponentSpec {
   /// last 25%, as a bob's cards do (bob01 and bob02's rails lie 1-1.5 cm farther off the body from
   /// the middle of their length on than hair-synth's hugging cards).
   double hang_volume_m = 0.0;
+  /// Normal hair: the truth's hair is rooted all over the scalp its cards cover, not only at
+  /// each card's root: under every point of a card that lies over the scalp (above the
+  /// hairline), true strands rise from the scalp, over twice the card's height there, and
+  /// run on along the card to its tip, as the hair under a voluminous cut's outer cards is
+  /// rooted (bob01's and bob02's shells stand 2-4 cm off the head, and the scalp under
+  /// them carries hair). Only the truth gains them; the mesh is the same.
+  bool rooted_under_volume = false;
   /// Above 0: each piece is meshed as a closed tube of this many sides round the stream's
   /// centre (its diameter the strip width), as artists model ringlets, not a flat strip.
   int tube_sides = 0;

@@ -606,6 +606,13 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   EXPECT_EQ(json["components"][0]["hang_volume_m"], 0.012);
   json["components"][0]["hang_volume_m"] = 0.15;
   EXPECT_THROW(spec_from_json(json), hair::Error);
+  // Its hair rooted under the cards round-trips, and only normal hair has it.
+  json = spec_json(preset("bob"));
+  EXPECT_EQ(json["components"][0]["rooted_under_volume"], true);
+  EXPECT_TRUE(spec_from_json(json).components[1].rooted_under_volume);
+  json = spec_json(preset("ring_cap"));
+  json["components"][0]["rooted_under_volume"] = true;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
   // Tucked tips: a share, a length of at least 2 mm, a depth of at most 5 cm.
   json = spec_json(preset("short_cap"));
   EXPECT_EQ(json["defects"]["tucked_share"], 0.0);
@@ -790,6 +797,66 @@ TEST(SynthPresets, ABobsCardsStandOffTheHeadBelowTheCrownAndTurnInAtTheTips) {
   EXPECT_GT(middle_lift_m, 0.008);
   EXPECT_LT(middle_lift_m, 0.0125);
   EXPECT_LT(tip_lift_m, 0.5 * middle_lift_m);
+}
+
+TEST(SynthPresets, ABobsTruthIsRootedAllOverTheScalpUnderItsCards) {
+  // A voluminous cut's outer cards stand off the head and the scalp under them carries
+  // hair (bob01's and bob02's shells, 2-4 cm off): the bob's truth gains strands rooted
+  // there that rise to the cards and run on along them; its mesh stays as it was.
+  Triangles3i triangles = fan_triangulation(body_m().face_offsets, body_m().face_vertices);
+  TriangleMeshDistance body(body_m().vertices, triangles);
+  HairStyleSpec bob = preset("bob"), crown_only = bob;
+  for (ComponentSpec& component : crown_only.components) component.rooted_under_volume = false;
+  const SynthModel model = generate_model(bob, body_m(), 1);
+  const SynthModel cards = generate_model(crown_only, body_m(), 1);
+  EXPECT_EQ(model.mesh.vertices, cards.mesh.vertices);
+  EXPECT_EQ(model.mesh.face_vertices, cards.mesh.face_vertices);
+  EXPECT_EQ(model.stream_centres.points, cards.stream_centres.points);
+  const StrandSet& truth = model.strands;
+  const int64_t on_cards = cards.strands.strand_count();
+  ASSERT_GT(truth.strand_count(), on_cards);
+  // The card-rooted strands first, as they were.
+  EXPECT_EQ(truth.points.topRows(cards.strands.point_count()), cards.strands.points);
+  // The card roots lie round the crown; the new roots on the scalp below it, down the sides
+  // and the back, each on the scalp, and every strand ends on its stream's card.
+  const Eigen::Vector3d top = cards.strands.points.colwise().maxCoeff().cast<double>().transpose();
+  const double lift_m = bob.defects.scalp_lift_m;
+  const auto& stream = std::get<std::vector<int32_t>>(truth.strand_attributes.at("stream"));
+  int64_t low_roots = 0, steep_first_steps = 0;
+  double highest_card_root_drop_m = 0;
+  for (int64_t s = 0; s < on_cards; ++s)
+    highest_card_root_drop_m =
+        std::max(highest_card_root_drop_m, top.y() - truth.points(truth.offsets[s], 1));
+  for (int64_t s = on_cards; s < truth.strand_count(); ++s) {
+    const Eigen::Vector3d root = truth.points.row(truth.offsets[s]).cast<double>().transpose();
+    EXPECT_NEAR(body.distance(root), lift_m, 0.002) << "root of strand " << s;
+    if (top.y() - root.y() > highest_card_root_drop_m) ++low_roots;
+    const Eigen::Vector3d second =
+        truth.points.row(truth.offsets[s] + 1).cast<double>().transpose();
+    // The first step leaves the scalp along the card: it rises by less than 45 degrees.
+    const Eigen::Vector3d step = second - root;
+    const double rise_m = body.distance(second) - body.distance(root);
+    if (rise_m > std::sqrt(0.5) * step.norm()) ++steep_first_steps;
+    // Its tip on its stream's centre curve, within the card's half width.
+    const Eigen::Vector3d tip =
+        truth.points.row(truth.offsets[s + 1] - 1).cast<double>().transpose();
+    const StrandSet& centres = model.stream_centres;
+    const int32_t id = stream[static_cast<size_t>(s)];
+    double nearest_m = std::numeric_limits<double>::infinity();
+    for (int64_t row = centres.offsets[id]; row < centres.offsets[id + 1]; ++row)
+      nearest_m =
+          std::min(nearest_m, (centres.points.row(row).cast<double>().transpose() - tip).norm());
+    EXPECT_LT(nearest_m, 0.5 * 0.06 * 1.2 + 0.004) << "tip of strand " << s;
+  }
+  const int64_t under = truth.strand_count() - on_cards;
+  std::printf(
+      "[ synth    ] bob: %lld strands on the cards, %lld rooted under them (%lld below "
+      "every card root), %lld leaving the scalp steeper than 45 degrees\n",
+      static_cast<long long>(on_cards), static_cast<long long>(under),
+      static_cast<long long>(low_roots), static_cast<long long>(steep_first_steps));
+  EXPECT_GT(under, on_cards / 4);
+  EXPECT_GT(low_roots, under / 2);
+  EXPECT_LT(steep_first_steps, under / 20);
 }
 
 }  // namespace
