@@ -110,6 +110,10 @@ int main(int argc, char** argv) {
         "along the field a strand moves towards its reference strand's height by at most this "
         "share of a step",
         hair::ParamRange::closed(0, 1));
+  p.add("layer_climb_h", params.layer_climb_h,
+        "a strand rooted under its layer climbs to it at an even slope within this length of "
+        "its root, in H; 0: by at most layer_pull of a step per step",
+        hair::ParamRange::at_least(0));
   p.add("max_length_h", params.max_length_h, "no strand grows longer than this, in H",
         hair::ParamRange::above(0));
   p.add("max_points_per_strand", params.max_points_per_strand,

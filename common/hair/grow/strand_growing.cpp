@@ -626,6 +626,7 @@ class StrandGrower {
     // would climb from the scalp to the layer above at 50 degrees or more, across the hair.
     int steps_since_layer = kLayerEvery - 1;
     Vec3 layer_step = Vec3::Zero();
+    double climb_per_m = -1;  // the climb to the layer per metre along, from the first look-up
     while (!full()) {
       if (length_m + step_m_ > length_limit_m) return false;
       std::optional<Vec3> d1 = field_->direction(point);
@@ -634,7 +635,8 @@ class StrandGrower {
       if (!d2) break;
       Vec3 next = point + step_m_ * *d2;
       if (context_.layered() && ++steps_since_layer == kLayerEvery) {
-        layer_step = towards_layer(next, reference_row, length_m + step_m_, cursor) / kLayerEvery;
+        layer_step = towards_layer(next, reference_row, length_m + step_m_, cursor, climb_per_m) /
+                     kLayerEvery;
         steps_since_layer = 0;
       }
       next += layer_step;
@@ -653,9 +655,12 @@ class StrandGrower {
   /// Towards the reference strand's height above the body at `length_m` along it, every
   /// kLayerEvery steps by at most layer_pull of those steps: the height and its direction
   /// from the body's signed distance field inside its band, from the exact distance beyond
-  /// it (the costlier query: a third of grow's time on long01 when made every step).
-  Vec3 towards_layer(const Vec3& next, int64_t reference_row, double length_m,
-                     int64_t& cursor) const {
+  /// it (the costlier query: a third of grow's time on long01 when made every step). Within
+  /// layer_climb_h of the root (and a step), by at most the climb's even slope instead:
+  /// `climb_per_m` (negative until then) is set at the first look-up, the height still to
+  /// climb there over layer_climb_h.
+  Vec3 towards_layer(const Vec3& next, int64_t reference_row, double length_m, int64_t& cursor,
+                     double& climb_per_m) const {
     double height_m = body_.distance(next);
     Vec3 up = Vec3::Zero();
     if (height_m < body_.band_m() - 1.5 * body_.voxel_m()) {
@@ -667,7 +672,12 @@ class StrandGrower {
     }
     if (!(up.squaredNorm() > 0)) return Vec3::Zero();
     const double target_m = context_.height_along(reference_row, length_m, cursor);
-    const double pull_m = params_.layer_pull * step_m_ * kLayerEvery;
+    const double climb_m = params_.layer_climb_h * context_.input().head_height_m;
+    if (climb_per_m < 0) climb_per_m = climb_m > 0 ? std::abs(target_m - height_m) / climb_m : 0.0;
+    const double pull_m =
+        (climb_m > 0 && length_m <= climb_m + step_m_ ? climb_per_m * step_m_
+                                                      : params_.layer_pull * step_m_) *
+        kLayerEvery;
     return up.normalized() * std::clamp(target_m - height_m, -pull_m, pull_m);
   }
 

@@ -136,6 +136,12 @@ struct GrowParams {
   /// Along the field, each step moves a strand towards its reference strand's height above
   /// the body (at the same arc length) by at most this share of a step.
   double layer_pull = 0.5;
+  /// ...except over the first this much of its length (H): a strand rooted under its
+  /// layer climbs to it at an even slope, the height it has to climb at its first step over
+  /// this length, gently under hair lying on the head (short01's cap 7 mm up: about 20
+  /// degrees) and steeply under a shell standing off it (bob01's, 2-4 cm: 45-65 degrees),
+  /// as hair with volume at its roots does. 0: layer_pull from the root on.
+  double layer_climb_h = 0.08;
   int max_points_per_strand = 2000;
   /// No strand grows longer than this (a guard against strands that wander from group to
   /// group; the longest MakeHuman hair, long01, is about 3.5 H).

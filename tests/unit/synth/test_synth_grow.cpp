@@ -442,11 +442,14 @@ TEST(SynthGrow, PaintedPresetsAgainstTheirTruth) {
       // (hang_volume_m, 2026-11-27): rooted on the scalp under a card that stands off it,
       // a strand rises to the card first (seed 1: the first tenth of the grown strands
       // runs along the truth 57% of the time, the rest 86-94%). Since its truth is rooted
-      // under the cards too (rooted_under_volume, 2026-11-28), 84.2% over its seeds.
+      // under the cards too (rooted_under_volume, 2026-11-28), 84.2% over its seeds; since
+      // grown strands climb to their layer within layer_climb_h (0.08 H, 19 mm: steeper
+      // than the truth's hair, which climbs over twice the card's height), 81.4-84.0%
+      // (fidelity 0.0126 -> 0.0115 H).
       const double along_floor = name == "low_tail"   ? 0.7
                                  : name == "bun"      ? 0.74
                                  : name == "ringlets" ? 0.52
-                                 : name == "bob"      ? 0.82
+                                 : name == "bob"      ? 0.8
                                                       : 0.85;
       EXPECT_GE(scores.along_truth, along_floor);
       EXPECT_LT(scores.worst_layer_coverage, 0.03);  // every true layer reached
