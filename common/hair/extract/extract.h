@@ -82,8 +82,9 @@ struct ExtractParams {
   /// within scalp_distance_h of the line along the triangle's outward normal (a bob's
   /// shell 2-4 cm off the back of the head is rooted all over the scalp under it), except
   /// where the triangle faces forward (normal's +Z above 0.5: hair hanging over the face is
-  /// rooted above it). 0: only the distance decides.
-  double scalp_under_hair_h = 0.1;
+  /// rooted above it). 0: only the distance decides. 0.15 (hair up to 0.18 H, 4.3 cm, out):
+  /// bob01's shell stands 0.11-0.15 H off the upper back along the scalp's normal.
+  double scalp_under_hair_h = 0.15;
   /// How the painted flow is read off the mesh's textures (painted_flow.h).
   PaintedFlowParams painted_flow;
 };
