@@ -1,8 +1,8 @@
 #pragma once
 
 // Extract, typeify and both clusterings of a hair mesh in memory with the default
-// parameters, as the stages chain them: the start of the synthetic-truth tests. A mesh
-// with materials (painted synthetic presets) has its embedded textures read, as the
+// parameters (extract's may be given), as the stages chain them: the start of the synthetic-truth
+// tests. A mesh with materials (painted synthetic presets) has its embedded textures read, as the
 // extract stage reads a mesh's textures.
 
 #include <string>
@@ -37,9 +37,9 @@ inline GroupTypes typeify_in_memory(const ExtractResult& extract,
 }
 
 inline ClusteredInMemory cluster_in_memory(const PolyMesh& mesh, const PolyMesh& body,
-                                           const std::string& name) {
+                                           const std::string& name,
+                                           const ExtractParams& params = ExtractParams{}) {
   ClusteredInMemory run;
-  const ExtractParams params;
   run.extract = extract_strands(mesh, body, params, name, "body",
                                 load_painted_textures(mesh.materials, params.painted_flow, name));
   run.head_height_m = run.extract.head.head_height;

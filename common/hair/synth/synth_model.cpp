@@ -1293,15 +1293,15 @@ void add_true_strands_under_volume(const Stream& stream, int32_t stream_id, cons
 
 const std::vector<std::string>& painted_preset_names() {
   static const std::vector<std::string> names = {
-      "ring_cap", "cap_over_layer", "mohawk", "low_tail", "face_locks",
-      "bun",      "ringlets",       "bob",    "swirl_cap"};
+      "ring_cap", "cap_over_layer", "mohawk", "low_tail",  "face_locks",
+      "bun",      "ringlets",       "bob",    "swirl_cap", "volume_bob"};
   return names;
 }
 
 bool in_training_corpus(const std::string& name) {
   // The bob's clusters come out shorter than a real bob's (0.54 H against bob02's
   // 0.86 H), and trained on, they pulled short03's cap to normal (docs/synth.md).
-  return name != "bob" && name != "swirl_cap";
+  return name != "bob" && name != "swirl_cap" && name != "volume_bob";
 }
 
 const std::vector<std::string>& preset_names() {
@@ -1468,6 +1468,13 @@ HairStyleSpec painted_preset(const std::string& name) {
     spec.defects.normal_pieces_max = 1;
     spec.defects.painted_texture = true;
     spec.components = {left, right};
+  } else if (name == "volume_bob") {
+    // The bob with its cards standing off the head as far as bob01's shell does (2-4 cm off
+    // the back of the head): up to 3 cm more below the crown, its truth rooted all over the
+    // scalp under them. Extract's scalp has to reach that far under hair for the roots.
+    spec = painted_preset("bob");
+    spec.name = name;
+    for (ComponentSpec& component : spec.components) component.hang_volume_m = 0.03;
   } else if (name == "swirl_cap") {
     // A one-piece wig cap as ring_cap, but meshed in a grid of latitudes and longitudes
     // that pays no heed to its hair (short01's and short03's caps), its hair swirling round

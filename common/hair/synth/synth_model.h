@@ -188,13 +188,14 @@ const std::vector<std::string>& preset_names();
 /// (a few wide one-piece cards cut level at the jaw, as bob01 and bob02), "swirl_cap" (a
 /// one-piece cap in rings whose hair swirls round its whorl, painted with a tiled texture
 /// that does not fade: the paint gives the axis, the hair's own lie its sense, as short01's
-/// cap).
+/// cap), "volume_bob" (the bob with its cards standing up to 3 cm more off the head, as
+/// bob01's shell does, its truth rooted under them).
 const std::vector<std::string>& painted_preset_names();
 
 /// Whether corpus_plan() puts the preset `name` in the training corpus: every preset but
 /// "bob", whose clusters come out shorter than a real bob's (docs/synth.md), and
-/// "swirl_cap", added for extract's orientation after the corpus was drawn (a preset in the
-/// corpus renumbers every model after it).
+/// "swirl_cap" and "volume_bob", added for extract and grow after the corpus was drawn (a
+/// preset in the corpus renumbers every model after it).
 bool in_training_corpus(const std::string& name);
 
 /// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.
