@@ -1281,8 +1281,12 @@ void add_true_strands_under_volume(const Stream& stream, int32_t stream_id, cons
       const Vec3 card = place(stream.along_m[k]);
       const double t = std::clamp((stream.along_m[k] - start_m) / climb_m, 0.0, 1.0);
       const double weight = t * t * (3 - 2 * t);
-      const Vec3 foot = foot_of(card);
-      points.push_back(weight >= 1 ? card : Vec3(foot + weight * (card - foot)));
+      if (weight >= 1) {
+        points.push_back(card);  // past the climb: no foot to look up
+      } else {
+        const Vec3 foot = foot_of(card);
+        points.push_back(foot + weight * (card - foot));
+      }
       along_m.push_back(stream.along_m[k]);
     }
     append_true_strand(stream, stream_id, points, along_m, polylines, strand_stream, point_style);
