@@ -1247,7 +1247,8 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
 
   result.scalp_triangle = scalp_triangles(
       result.body_vertices, result.body_triangles, result.head.neck_y, result.hair_mesh,
-      params.scalp_distance_h * head_height_m, params.scalp_under_hair_h * head_height_m);
+      params.scalp_distance_h * head_height_m, params.scalp_under_hair_h * head_height_m,
+      params.scalp_under_hair_min_height_h * head_height_m);
   return result;
 }
 

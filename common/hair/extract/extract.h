@@ -85,6 +85,11 @@ struct ExtractParams {
   /// rooted above it). 0: only the distance decides. 0.15 (hair up to 0.18 H, 4.3 cm, out):
   /// bob01's shell stands 0.11-0.15 H off the upper back along the scalp's normal.
   double scalp_under_hair_h = 0.15;
+  /// ...on triangles at least this far above the neck (H). Lower, at the bottom of the nape
+  /// and under the ears, hair standing off the head hangs past it from above: ponytail01's
+  /// tail hangs 2-4 cm off the nape 0.04-0.12 H above the neck, where the mesh has no hair
+  /// on the head.
+  double scalp_under_hair_min_height_h = 0.1;
   /// How the painted flow is read off the mesh's textures (painted_flow.h).
   PaintedFlowParams painted_flow;
 };

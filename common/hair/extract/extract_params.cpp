@@ -105,6 +105,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "...and so do those not facing forward under hair that stands off the head up to "
              "this far along their normal, in H (0: only the distance decides)",
              ParamRange::closed(0, 1));
+  params.add("scalp_under_hair_min_height_h", p.scalp_under_hair_min_height_h,
+             "...on triangles at least this far above the neck, in H (lower, hair standing "
+             "off the head hangs past it: a tail, long hair)",
+             ParamRange::closed(0, 1));
   params.add("flow_min_alpha", p.painted_flow.min_alpha,
              "painted flow: texels with at least this alpha are painted hair",
              ParamRange::closed(0, 1));

@@ -8,7 +8,7 @@ namespace hair {
 std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
                                      const Triangles3i& body_triangles, double neck_y,
                                      const PolyMesh& hair_mesh, double max_distance_m,
-                                     double under_hair_m) {
+                                     double under_hair_m, double under_hair_min_height_m) {
   const TriangleMeshDistance hair_distance(
       hair_mesh.vertices, fan_triangulation(hair_mesh.face_offsets, hair_mesh.face_vertices));
   std::vector<uint8_t> scalp(static_cast<size_t>(body_triangles.rows()), 0);
@@ -25,6 +25,7 @@ std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
       continue;
     }
     if (!(under_hair_m > max_distance_m)) continue;
+    if (centroid.y() < neck_y + under_hair_min_height_m) continue;
     const Eigen::Vector3d normal =
         (corner[1] - corner[0]).cross(corner[2] - corner[0]).normalized();
     if (!(normal.z() <= kFaceNormalZ)) continue;

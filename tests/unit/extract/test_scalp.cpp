@@ -88,9 +88,9 @@ TEST(Scalp, HairStandingOffTheHeadMarksTheScalpUnderItButNotTheFace) {
   add_sheet(hair, 180, 0.03);
   add_sheet(hair, 0, 0.03);
   const std::vector<uint8_t> with_under =
-      scalp_triangles(body.vertices, body.triangles, kNeckY, hair, kMaxDistance, kUnderHair);
+      scalp_triangles(body.vertices, body.triangles, kNeckY, hair, kMaxDistance, kUnderHair, 0);
   const std::vector<uint8_t> by_distance =
-      scalp_triangles(body.vertices, body.triangles, kNeckY, hair, kMaxDistance, 0);
+      scalp_triangles(body.vertices, body.triangles, kNeckY, hair, kMaxDistance, 0, 0);
   EXPECT_EQ(marked_share_under(body, with_under, 90), 1.0);
   EXPECT_EQ(marked_share_under(body, by_distance, 90), 1.0);
   EXPECT_EQ(marked_share_under(body, with_under, 180), 1.0);
@@ -110,9 +110,51 @@ TEST(Scalp, HairStandingOffTheHeadMarksTheScalpUnderItButNotTheFace) {
   add_sheet(far, 180, 0.06);
   EXPECT_EQ(marked_share_under(body,
                                scalp_triangles(body.vertices, body.triangles, kNeckY, far,
-                                               kMaxDistance, kUnderHair),
+                                               kMaxDistance, kUnderHair, 0),
                                180),
             0.0);
+}
+
+// Hair standing off the lowest part of the head hangs past it from above (a ponytail's tail
+// behind the nape): with scalp_under_hair_min_height, the shell behind the head marks the
+// scalp under it only that far above the neck; by distance, hair lying on the head marks it
+// down to the neck as before.
+TEST(Scalp, HairStandingOffTheHeadMarksNoScalpNearTheNeck) {
+  const testing::SphereMesh body = testing::icosphere(4, kRadius, kCentre);
+  PolyMesh hair;
+  add_sheet(hair, 90, 0.005);
+  add_sheet(hair, 180, 0.03);
+  constexpr double kMinHeight = 0.04;
+  const std::vector<uint8_t> scalp = scalp_triangles(body.vertices, body.triangles, kNeckY, hair,
+                                                     kMaxDistance, kUnderHair, kMinHeight);
+  int64_t low_behind = 0, high_behind = 0, low_side = 0;
+  for (Eigen::Index t = 0; t < body.triangles.rows(); ++t) {
+    Vec3 centroid = Vec3::Zero();
+    for (int k = 0; k < 3; ++k)
+      centroid += body.vertices.row(body.triangles(t, k)).cast<double>().transpose() / 3;
+    const Vec3 from_centre = (centroid - kCentre).normalized();
+    const double azimuth_deg =
+        std::atan2(from_centre.x(), from_centre.z()) * 180 / std::numbers::pi;
+    const double polar_deg = std::acos(from_centre.y()) * 180 / std::numbers::pi;
+    if (polar_deg < kPolarFirstDeg + 5 || polar_deg > kPolarLastDeg - 5) continue;
+    const double height_m = centroid.y() - kNeckY;
+    const auto marked = scalp[static_cast<size_t>(t)];
+    if (std::abs(std::abs(azimuth_deg) - 180) < 15) {
+      if (height_m < kMinHeight) {
+        ++low_behind;
+        EXPECT_EQ(marked, 0) << "behind the head at " << height_m << " m above the neck";
+      } else if (height_m > kMinHeight + 0.005) {
+        ++high_behind;
+        EXPECT_EQ(marked, 1) << "behind the head at " << height_m << " m above the neck";
+      }
+    } else if (std::abs(azimuth_deg - 90) < 15 && height_m < kMinHeight) {
+      ++low_side;
+      EXPECT_EQ(marked, 1) << "under hair lying on the head at " << height_m << " m";
+    }
+  }
+  EXPECT_GT(low_behind, 5);
+  EXPECT_GT(high_behind, 5);
+  EXPECT_GT(low_side, 5);
 }
 
 }  // namespace

@@ -531,6 +531,52 @@ TEST(SynthGrow, AVoluminousBobsHairIsRootedUnderItsShell) {
   EXPECT_LE(now.mean(), before.mean());
 }
 
+// Long hair hangs down past the bottom of the nape, lying on it or standing off it, and its
+// truth is rooted far above (hair-synth's long_straight and half_up: the lowest true root
+// 0.46-0.48 H above the neck). Extract's scalp under hair standing off the head starts
+// scalp_under_hair_min_height_h above the neck (ponytail01's tail, 2-4 cm off its nape,
+// rooted hair there in session 21): grown roots more than 0.35 H below the lowest true root
+// (about 0.11 H above the neck) are then fewer than half as many as without it.
+TEST(SynthGrow, LongHairHangingPastTheNapeIsNotRootedUnderIt) {
+  PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+  body.vertices *= 0.1f;
+  ExtractParams to_the_neck;
+  to_the_neck.scalp_under_hair_min_height_h = 0;
+  for (const char* name : {"long_straight", "half_up"}) {
+    int64_t low_now = 0, low_to_the_neck = 0, grown_count = 0;
+    for (uint32_t seed : {1u, 2u, 3u}) {
+      SCOPED_TRACE(std::string(name) + ", seed " + std::to_string(seed));
+      const SynthModel model =
+          generate_model(varied_spec(preset(name), seed), body, seed, kTrueStrandsPerStream);
+      const StrandSet& truth = model.strands;
+      double lowest_true_root_y = std::numeric_limits<double>::infinity();
+      for (int64_t strand = 0; strand < truth.strand_count(); ++strand)
+        lowest_true_root_y =
+            std::min<double>(lowest_true_root_y, truth.points(truth.offsets[strand], 1));
+      auto low_roots = [&](const Grown& grown) {
+        const StrandSet& strands = grown.result.strands;
+        const double below_y = lowest_true_root_y - 0.35 * grown.head_height_m;
+        int64_t low = 0;
+        for (int64_t strand = 0; strand < strands.strand_count(); ++strand)
+          low += strands.points(strands.offsets[strand], 1) < below_y ? 1 : 0;
+        return low;
+      };
+      const Grown grown = grow_model(model, body, name);
+      grown_count += grown.result.strands.strand_count();
+      low_now += low_roots(grown);
+      low_to_the_neck +=
+          low_roots(grow_model(model, body, name, GrowParams{}.join_continued_flow, to_the_neck));
+    }
+    std::printf(
+        "[ synth    ] %s: %lld of %lld grown roots more than 0.35 H below the lowest true root "
+        "(%lld with the scalp under hair down to the neck)\n",
+        name, static_cast<long long>(low_now), static_cast<long long>(grown_count),
+        static_cast<long long>(low_to_the_neck));
+    EXPECT_LT(2 * low_now, low_to_the_neck) << name;
+    EXPECT_LT(static_cast<double>(low_now), 0.05 * static_cast<double>(grown_count)) << name;
+  }
+}
+
 // Artists hide a card's end under the skin (bob01's front cards run into the forehead):
 // short caps whose every grid's tip dives 8 mm under the scalp over its last 12 mm
 // (DefectSpec::tucked_share). The true strands still end on the scalp. Grown strands that
