@@ -57,8 +57,9 @@ JudgedFlow judged_flow_of(const hair::h5::File& extract, double head_height_m) {
                     hair::h5::read_strand_set(extract, "/strands"),
                     0.1 * head_height_m,
                     {}};
-  judged.flow =
-      hair::flow_with_rails(judged.paint.mesh, judged.paint.flow, judged.input, judged.near_m);
+  judged.flow = hair::flow_with_rails(judged.paint.mesh, judged.paint.flow, judged.input,
+                                      hair::h5::read_vector<int32_t>(extract, "/mesh/face_group"),
+                                      judged.near_m);
   return judged;
 }
 

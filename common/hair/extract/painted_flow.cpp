@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -316,33 +318,54 @@ std::vector<int8_t> segments_along_painted_flow(const PolyMesh& mesh, const Pain
 }
 
 PaintedFlow flow_with_rails(const PolyMesh& mesh, const PaintedFlow& painted,
-                            const StrandSet& input_strands, double max_distance_m) {
+                            const StrandSet& input_strands, const std::vector<int32_t>& face_group,
+                            double max_distance_m) {
   const auto faces = static_cast<size_t>(mesh.face_count());
   PaintedFlow flow = painted;
   flow.direction.resize(faces, Eigen::Vector3f::Zero());
   flow.coherence.resize(faces, 0.0f);
   flow.alpha_fall.resize(faces, 0.0f);
-  // Segment midpoints of the input strands, and their directions.
+  // Segment midpoints of the input strands and their directions, all together and by the
+  // group (patch) of their strand.
+  const std::vector<int32_t>* strand_group = nullptr;
+  if (auto it = input_strands.strand_attributes.find("group");
+      it != input_strands.strand_attributes.end() && face_group.size() == faces)
+    strand_group = std::get_if<std::vector<int32_t>>(&it->second);
   std::vector<Eigen::Vector3f> directions;
   std::vector<Eigen::Vector3f> midpoints;
+  std::map<int32_t, std::vector<int32_t>> group_segments;
   for (int64_t s = 0; s < input_strands.strand_count(); ++s)
     for (int64_t row = input_strands.offsets[static_cast<size_t>(s)] + 1;
          row < input_strands.offsets[static_cast<size_t>(s) + 1]; ++row) {
       Eigen::Vector3f a = input_strands.points.row(row - 1).transpose();
       Eigen::Vector3f b = input_strands.points.row(row).transpose();
       if (!((b - a).norm() > 0)) continue;
+      if (strand_group)
+        group_segments[(*strand_group)[static_cast<size_t>(s)]].push_back(
+            static_cast<int32_t>(midpoints.size()));
       midpoints.push_back(0.5f * (a + b));
       directions.push_back((b - a).normalized());
     }
   if (midpoints.empty()) return flow;
-  Points3f midpoint_rows(static_cast<Eigen::Index>(midpoints.size()), 3);
-  for (size_t i = 0; i < midpoints.size(); ++i)
-    midpoint_rows.row(static_cast<Eigen::Index>(i)) = midpoints[i].transpose();
-  const PointIndex index(midpoint_rows);
+  auto index_of = [&](const std::vector<int32_t>& ids) {
+    Points3f rows(static_cast<Eigen::Index>(ids.size()), 3);
+    for (size_t i = 0; i < ids.size(); ++i)
+      rows.row(static_cast<Eigen::Index>(i)) = midpoints[static_cast<size_t>(ids[i])].transpose();
+    return std::make_unique<PointIndex>(rows);
+  };
+  std::vector<int32_t> all(midpoints.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int32_t>(i);
+  const std::unique_ptr<PointIndex> all_index = index_of(all);
+  std::map<int32_t, std::unique_ptr<PointIndex>> group_index;
+  for (const auto& [group, ids] : group_segments) group_index[group] = index_of(ids);
+  std::vector<int64_t> unclear;
+  for (int64_t face = 0; face < mesh.face_count(); ++face)
+    if (!(flow.coherence[static_cast<size_t>(face)] >= kClearFlowCoherence))
+      unclear.push_back(face);
 #pragma omp parallel for schedule(static)
-  for (int64_t face = 0; face < mesh.face_count(); ++face) {
+  for (size_t i = 0; i < unclear.size(); ++i) {
+    const int64_t face = unclear[i];
     const auto f = static_cast<size_t>(face);
-    if (flow.coherence[f] >= kClearFlowCoherence) continue;
     Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
     const int64_t first = mesh.face_offsets[f];
     for (int c = 0; c < mesh.face_size(face); ++c)
@@ -350,11 +373,21 @@ PaintedFlow flow_with_rails(const PolyMesh& mesh, const PaintedFlow& painted,
     centroid /= static_cast<float>(mesh.face_size(face));
     flow.direction[f] = Eigen::Vector3f::Zero();
     flow.coherence[f] = 0;
-    for (int32_t id : index.nearest(centroid, 1))
-      if ((midpoints[static_cast<size_t>(id)] - centroid).norm() <= max_distance_m) {
-        flow.direction[f] = directions[static_cast<size_t>(id)];
+    // The face's own rails: its group's strands; any strand's where its group has none.
+    const std::vector<int32_t>* ids = &all;
+    const PointIndex* index = all_index.get();
+    if (strand_group)
+      if (auto it = group_index.find(face_group[f]); it != group_index.end()) {
+        ids = &group_segments.at(face_group[f]);
+        index = it->second.get();
+      }
+    for (int32_t id : index->nearest(centroid, 1)) {
+      const auto segment = static_cast<size_t>((*ids)[static_cast<size_t>(id)]);
+      if ((midpoints[segment] - centroid).norm() <= max_distance_m) {
+        flow.direction[f] = directions[segment];
         flow.coherence[f] = 1;
       }
+    }
   }
   return flow;
 }

@@ -94,11 +94,16 @@ std::vector<int8_t> segments_along_painted_flow(const PolyMesh& mesh, const Pain
                                                 double max_angle_deg, double max_distance_m);
 
 /// The flow of every face as a user judges grown hair against: the painted flow where it
-/// is clear (coherence >= kClearFlowCoherence), else the direction of the input strand
-/// (rail) segment nearest the face's centroid within `max_distance_m`, with coherence 1;
-/// faces with neither keep no flow. `input_strands` are extract's strands.
+/// is clear (coherence >= kClearFlowCoherence), else the face's rails: the direction of the
+/// segment nearest the face's centroid, within `max_distance_m`, of the input strands of
+/// the face's own group (`face_group`, one per face; their "group" strand attribute),
+/// with coherence 1. Where a face's group has no input strand, or without the groups, the
+/// nearest segment of any input strand. Faces with neither keep no flow. `input_strands`
+/// are extract's strands. (Until session 22 the nearest segment of any strand: where
+/// cards cross or stack, as short01's spikes on its cap, that is often another card's.)
 PaintedFlow flow_with_rails(const PolyMesh& mesh, const PaintedFlow& painted,
-                            const StrandSet& input_strands, double max_distance_m);
+                            const StrandSet& input_strands, const std::vector<int32_t>& face_group,
+                            double max_distance_m);
 
 /// The share of the judged segments of `strands` that run along the painted flow
 /// (segments_along_painted_flow()); `counted` receives how many were judged (0: the share

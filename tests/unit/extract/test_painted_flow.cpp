@@ -171,6 +171,69 @@ TEST(PaintedFlowMakeHuman, ACapReadAsRingsWithoutItsTextureIsTracedAlongThePaint
 
 class PaintedFlowEveryMakeHuman : public ::testing::TestWithParam<std::string> {};
 
+// Where the paint is not clear a face is judged against its rails: its own group's input
+// strands, not those of a card that crosses it closer (short01's spikes stacked on its
+// cap). Two strips of two quads 1 cm wide and 4 cm long: A along x in z = 0, rails along its
+// two long edges; B along y, 1 mm above A, crossing it over x in [1, 2] cm, a rail along
+// its edge x = 1 cm. A face of a group with no strands takes the nearest rail of any.
+TEST(PaintedFlowRails, AFaceWithoutClearPaintIsJudgedAgainstItsOwnRails) {
+  PolyMesh mesh;
+  mesh.vertices.resize(12, 3);
+  mesh.vertices << 0, 0, 0, 0.02f, 0, 0, 0.04f, 0, 0,  // A's edge y = 0
+      0, 0.01f, 0, 0.02f, 0.01f, 0, 0.04f, 0.01f, 0,   // A's edge y = 1 cm
+      0.01f, -0.015f, 0.001f, 0.02f, -0.015f, 0.001f,  // B's start, y = -1.5 cm
+      0.01f, 0.005f, 0.001f, 0.02f, 0.005f, 0.001f,    // B's middle, over A
+      0.01f, 0.025f, 0.001f, 0.02f, 0.025f, 0.001f;    // B's end
+  for (const std::vector<int32_t>& quad :
+       std::vector<std::vector<int32_t>>{{0, 1, 4, 3}, {1, 2, 5, 4}, {6, 7, 9, 8}, {8, 9, 11, 10}})
+    mesh.append_face(quad);
+  PaintedFlow unpainted;
+  unpainted.direction.assign(4, Eigen::Vector3f::Zero());
+  unpainted.coherence.assign(4, 0.0f);
+  unpainted.alpha_fall.assign(4, 0.0f);
+  StrandSet rails;
+  auto add_rail = [&rails](const std::vector<Eigen::Vector3f>& points) {
+    Points3f rows(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i)
+      rows.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    rails.append_strand(rows);
+  };
+  for (float y : {0.0f, 0.01f})
+    add_rail({{0, y, 0}, {0.01f, y, 0}, {0.02f, y, 0}, {0.03f, y, 0}, {0.04f, y, 0}});
+  add_rail({{0.01f, -0.015f, 0.001f},
+            {0.01f, -0.005f, 0.001f},
+            {0.01f, 0, 0.001f},
+            {0.01f, 0.01f, 0.001f},
+            {0.01f, 0.025f, 0.001f}});
+  rails.strand_attributes["group"] = std::vector<int32_t>{0, 0, 1};
+  const std::vector<int32_t> face_group = {0, 0, 1, 1};
+  const PaintedFlow flow = flow_with_rails(mesh, unpainted, rails, face_group, 0.05);
+  // A's first face (centroid (1, 0.5) cm) lies 1 mm under a segment of B's rail, 7 mm from
+  // its own rails' nearest.
+  for (size_t face : {0u, 1u}) {
+    EXPECT_EQ(flow.coherence[face], 1.0f);
+    EXPECT_GT(std::abs(flow.direction[face].x()), 0.99f) << "face " << face;
+  }
+  for (size_t face : {2u, 3u}) EXPECT_GT(std::abs(flow.direction[face].y()), 0.99f);
+  // By the nearest rail of any group, as before session 22, A's first face took B's.
+  const PaintedFlow any = flow_with_rails(mesh, unpainted, rails, {}, 0.05);
+  EXPECT_GT(std::abs(any.direction[0].y()), 0.99f);
+  // Clear paint stays; a group without rails takes the nearest of any.
+  PaintedFlow painted = unpainted;
+  painted.direction[1] = Eigen::Vector3f(0, 0, 1);
+  painted.coherence[1] = 0.8f;
+  const PaintedFlow kept = flow_with_rails(mesh, painted, rails, {0, 0, 2, 2}, 0.05);
+  EXPECT_EQ(kept.direction[1], Eigen::Vector3f(0, 0, 1));
+  EXPECT_EQ(kept.coherence[1], 0.8f);
+  for (size_t face : {2u, 3u}) {
+    EXPECT_EQ(kept.coherence[face], 1.0f);
+    EXPECT_EQ(kept.direction[face], any.direction[face]);
+  }
+  // Beyond max_distance no flow.
+  const PaintedFlow near = flow_with_rails(mesh, unpainted, rails, face_group, 0.0005);
+  EXPECT_EQ(near.coherence[0], 0.0f);
+}
+
 TEST_P(PaintedFlowEveryMakeHuman, InputStrandsRunAlongThePaint) {
   // The real-meshes issue's target: at least 90% of the judged segments within 30 degrees
   // of the painted flow on every mesh whose texture decides it. afro01's tiny curl cards
