@@ -1009,6 +1009,27 @@ StrandSet field_paint_seeds(const GrowInput& input, const GrowingContext& contex
                              input.hair_triangle_flow, seeding_group, strands, seed_params);
 }
 
+/// The way a strand that cannot leave its root takes its one step: along the input strand
+/// `strand` at its point `row` (the root's reference; nearly always its tip, where the
+/// hair the mesh shows ends on the scalp: a cap's streamlines at the hairline, 93-100% of
+/// such roots on short01, short02, bob01, afro01), less any part into the scalp (`normal`,
+/// unit, outward), so it lies along the hair as the hair's ends there do; along the normal
+/// where the strand runs straight into the scalp (until session 22 always: a stub standing
+/// up out of the scalp).
+Vec3 stub_direction(const StrandSet& strands, int32_t strand, int64_t row, const Vec3& normal) {
+  const int64_t first = strands.offsets[static_cast<size_t>(strand)];
+  const int64_t last = strands.offsets[static_cast<size_t>(strand) + 1] - 1;
+  if (last <= first) return normal;
+  const int64_t from = std::min(row, last - 1);
+  Vec3 along = point_of(strands.points, from + 1) - point_of(strands.points, from);
+  if (!(along.norm() > 0)) return normal;
+  along.normalize();
+  if (along.dot(normal) < 0) along -= along.dot(normal) * normal;
+  // Within about 25 degrees of straight into the scalp, what is left says little.
+  if (!(along.norm() > 0.4)) return normal;
+  return along.normalized();
+}
+
 }  // namespace
 
 GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
@@ -1159,7 +1180,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
   }
 
   // Assemble; a strand that could not leave its root gets a second point one step out
-  // along the normal, so every strand is a polyline.
+  // along the hair there (stub_direction()), so every strand is a polyline.
   std::vector<Points3f> polylines;
   polylines.reserve(grown.size());
   std::vector<GrowRule>& rules = result.point_rule;
@@ -1168,7 +1189,12 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     GrowingStrand& strand = grown[i];
     if (strand.points.size() < 2) {
       Vec3 normal = roots.normals.row(static_cast<Eigen::Index>(i)).cast<double>().transpose();
-      strand.points.push_back(strand.points.front() + params.step_h * h * normal);
+      Vec3 step_end = strand.points.front() +
+                      params.step_h * h *
+                          stub_direction(strands, context.strand_of_point(reference_row[i]),
+                                         reference_row[i], normal);
+      if (body.push_out(step_end, params.body_clearance_h * h)) ++strand.pushed_out;
+      strand.points.push_back(step_end);
       strand.rules.push_back(GrowRule::field);
       strand.clusters.push_back(strand.clusters.front());
       strand.groups.push_back(-1);

@@ -1229,6 +1229,54 @@ TEST(StrandGrowing, StrandsEndWhereTheirCardDivesIntoTheBody) {
   EXPECT_GE(result.strands_ended_at_body, diving_strands / 2);
 }
 
+// A cap's rails that end over the scalp (a traced cap's streamlines at its hairline, 4 mm
+// over the head): a root beyond their tips has a tip as its reference and cannot leave it.
+// Its one step lies along the hair there, down the head as the rails end, not standing
+// straight up out of the scalp as before session 22 (10-20% of short01's, short02's, bob01's
+// and afro01's strands).
+TEST(StrandGrowing, AStrandThatCannotLeaveItsRootLiesAlongTheHairThere) {
+  GrowInput input = head_sphere_input("sphere");
+  std::vector<Points3f> rails;
+  constexpr double kLastDeg = 40;  // the scalp reaches 60 degrees from the crown
+  for (int k = 0; k < 12; ++k) {
+    const double azimuth = radians(30.0 * k);
+    const Vec3 out(std::cos(azimuth), 0, std::sin(azimuth));
+    Points3f rail(15, 3);
+    for (int i = 0; i < 15; ++i) {
+      const double polar = radians(5 + (kLastDeg - 5) * i / 14.0);
+      rail.row(i) =
+          (kCentre + (kRadius + kCardOffset) * (std::sin(polar) * out + std::cos(polar) * kUp))
+              .transpose()
+              .cast<float>();
+    }
+    rails.push_back(rail);
+  }
+  input.input_strands = strand_set_from_polylines(rails);
+  input.input_strands.strand_attributes["group"] = std::vector<int32_t>(12, 0);
+  input.group_type = {GroupType::root_connected};
+  input.group_cluster = {0};
+  const GrowResult result = grow_strands(input, params_with(kStrandCount));
+  int64_t stubs = 0;
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s) {
+    if (result.strands.strand_size(s) != 2) continue;
+    const Vec3 root = root_of(result.strands, s);
+    const Vec3 radial = (root - kCentre).normalized();
+    const double polar_deg = std::acos(radial.dot(kUp)) * 180 / std::numbers::pi;
+    if (polar_deg < kLastDeg) continue;  // beyond the rails' tips
+    ++stubs;
+    const Vec3 step = (last_of(result.strands, s) - root).normalized();
+    // Down the head: along the meridian, away from the crown (within 40 degrees: the rail
+    // whose tip is the reference may lie 15 degrees round the head).
+    const Vec3 down = (radial * radial.dot(kUp) - kUp).normalized();
+    EXPECT_GT(step.dot(down), std::cos(radians(40))) << "strand " << s << " at " << polar_deg;
+    EXPECT_LT(std::abs(step.dot(radial)), std::sin(radians(30))) << "strand " << s;
+    EXPECT_GE((last_of(result.strands, s) - kCentre).norm(), kRadius - 1e-4) << "strand " << s;
+  }
+  std::printf("[ grow     ] sphere: %lld strands beyond the rails' tips take one step along them\n",
+              static_cast<long long>(stubs));
+  EXPECT_GT(stubs, 20);
+}
+
 TEST(StrandGrowing, SameResultForOneAndTwoThreads) {
   Scene scene = make_scene();
   const int threads_before = omp_get_max_threads();
