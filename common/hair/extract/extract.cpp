@@ -1245,10 +1245,15 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   result.stats.strands_turned_to_their_group =
       turn_strands_against_their_group(result.strands, result.group_first_strand, sense);
 
-  result.scalp_triangle = scalp_triangles(
-      result.body_vertices, result.body_triangles, result.head.neck_y, result.hair_mesh,
-      params.scalp_distance_h * head_height_m, params.scalp_under_hair_h * head_height_m,
-      params.scalp_under_hair_min_height_h * head_height_m);
+  ScalpParams scalp;
+  scalp.neck_y = result.head.neck_y;
+  scalp.max_distance_m = params.scalp_distance_h * head_height_m;
+  scalp.under_hair_m = params.scalp_under_hair_h * head_height_m;
+  scalp.under_hair_min_height_m = params.scalp_under_hair_min_height_h * head_height_m;
+  scalp.face_below_y = result.head.head_top_y - params.scalp_face_below_top_h * head_height_m;
+  scalp.face_radius_m = kFaceRadiusH * head_height_m;
+  result.scalp_triangle =
+      scalp_triangles(result.body_vertices, result.body_triangles, result.hair_mesh, scalp);
   return result;
 }
 

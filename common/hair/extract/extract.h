@@ -90,6 +90,11 @@ struct ExtractParams {
   /// tail hangs 2-4 cm off the nape 0.04-0.12 H above the neck, where the mesh has no hair
   /// on the head.
   double scalp_under_hair_min_height_h = 0.1;
+  /// The face is never scalp: below this far under the crown (H; 0.4: the eyes of the
+  /// MakeHuman body lie 0.47-0.56 H under it), where the body round a triangle faces
+  /// forward (scalp.h). A fringe hanging over the eyes lies within scalp_distance_h of them.
+  /// 1 or more: no face (the neck lies 1 H under the crown).
+  double scalp_face_below_top_h = 0.4;
   /// How the painted flow is read off the mesh's textures (painted_flow.h).
   PaintedFlowParams painted_flow;
 };

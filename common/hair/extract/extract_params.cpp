@@ -109,6 +109,11 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "...on triangles at least this far above the neck, in H (lower, hair standing "
              "off the head hangs past it: a tail, long hair)",
              ParamRange::closed(0, 1));
+  params.add(
+      "scalp_face_below_top_h", p.scalp_face_below_top_h,
+      "...but never the face: triangles lower than this under the crown, in H, where the "
+      "body round them faces forward (+Z); 1 or more: no face, the neck lies 1 H under the crown",
+      ParamRange::closed(0, 2));
   params.add("flow_min_alpha", p.painted_flow.min_alpha,
              "painted flow: texels with at least this alpha are painted hair",
              ParamRange::closed(0, 1));

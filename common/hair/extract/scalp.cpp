@@ -3,33 +3,74 @@
 #include <Eigen/Geometry>
 #include <array>
 
+#include "hair/geom/point_index.h"
+
 namespace hair {
 
+namespace {
+
+std::array<Eigen::Vector3d, 3> corners_of(const Points3f& vertices, const Triangles3i& triangles,
+                                          Eigen::Index t) {
+  std::array<Eigen::Vector3d, 3> corner;
+  for (int k = 0; k < 3; ++k)
+    corner[static_cast<size_t>(k)] = vertices.row(triangles(t, k)).cast<double>().transpose();
+  return corner;
+}
+
+}  // namespace
+
+std::vector<uint8_t> face_triangles(const Points3f& body_vertices,
+                                    const Triangles3i& body_triangles, double below_y,
+                                    double radius_m) {
+  const Eigen::Index count = body_triangles.rows();
+  std::vector<uint8_t> face(static_cast<size_t>(count), 0);
+  Points3f centroids(count, 3);
+  std::vector<Eigen::Vector3d> area_normals(static_cast<size_t>(count));
+  for (Eigen::Index t = 0; t < count; ++t) {
+    const auto corner = corners_of(body_vertices, body_triangles, t);
+    centroids.row(t) = ((corner[0] + corner[1] + corner[2]) / 3.0).cast<float>().transpose();
+    area_normals[static_cast<size_t>(t)] = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
+  }
+  if (count == 0 || !(radius_m > 0)) return face;
+  const PointIndex index(centroids);
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index t = 0; t < count; ++t) {
+    const Eigen::Vector3f centroid = centroids.row(t).transpose();
+    if (!(centroid.y() < below_y)) continue;
+    Eigen::Vector3d around = Eigen::Vector3d::Zero();
+    for (int32_t id : index.within(centroid, static_cast<float>(radius_m)))
+      around += area_normals[static_cast<size_t>(id)];
+    if (around.norm() > 0 && around.normalized().z() > kFaceNormalZ)
+      face[static_cast<size_t>(t)] = 1;
+  }
+  return face;
+}
+
 std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
-                                     const Triangles3i& body_triangles, double neck_y,
-                                     const PolyMesh& hair_mesh, double max_distance_m,
-                                     double under_hair_m, double under_hair_min_height_m) {
+                                     const Triangles3i& body_triangles, const PolyMesh& hair_mesh,
+                                     const ScalpParams& params) {
   const TriangleMeshDistance hair_distance(
       hair_mesh.vertices, fan_triangulation(hair_mesh.face_offsets, hair_mesh.face_vertices));
+  const std::vector<uint8_t> face =
+      face_triangles(body_vertices, body_triangles, params.face_below_y, params.face_radius_m);
+  const double max_distance_m = params.max_distance_m;
   std::vector<uint8_t> scalp(static_cast<size_t>(body_triangles.rows()), 0);
 #pragma omp parallel for schedule(static)
   for (Eigen::Index t = 0; t < body_triangles.rows(); ++t) {
-    std::array<Eigen::Vector3d, 3> corner;
-    for (int k = 0; k < 3; ++k)
-      corner[static_cast<size_t>(k)] =
-          body_vertices.row(body_triangles(t, k)).cast<double>().transpose();
+    const auto corner = corners_of(body_vertices, body_triangles, t);
     const Eigen::Vector3d centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
-    if (centroid.y() < neck_y) continue;
+    if (centroid.y() < params.neck_y || face[static_cast<size_t>(t)]) continue;
     if (hair_distance.is_within(centroid, max_distance_m)) {
       scalp[static_cast<size_t>(t)] = 1;
       continue;
     }
-    if (!(under_hair_m > max_distance_m)) continue;
-    if (centroid.y() < neck_y + under_hair_min_height_m) continue;
+    if (!(params.under_hair_m > max_distance_m)) continue;
+    if (centroid.y() < params.neck_y + params.under_hair_min_height_m) continue;
     const Eigen::Vector3d normal =
         (corner[1] - corner[0]).cross(corner[2] - corner[0]).normalized();
     if (!(normal.z() <= kFaceNormalZ)) continue;
-    for (double height_m = max_distance_m; height_m <= under_hair_m; height_m += max_distance_m)
+    for (double height_m = max_distance_m; height_m <= params.under_hair_m;
+         height_m += max_distance_m)
       if (hair_distance.is_within(centroid + height_m * normal, max_distance_m)) {
         scalp[static_cast<size_t>(t)] = 1;
         break;

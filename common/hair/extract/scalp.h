@@ -3,6 +3,7 @@
 // grow samples its roots there).
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "hair/core/strand_set.h"
@@ -15,21 +16,51 @@ namespace hair {
 /// looks along +Z, as MakeHuman's does): hair hanging in front of it is rooted above it.
 inline constexpr double kFaceNormalZ = 0.5;
 
-/// Marks (1) the body triangles whose centroid lies at or above `neck_y` (+Y up) and
+/// The neighbourhood whose normals tell the face (face_triangles()), in head heights H:
+/// 0.08 H (2 cm on the MakeHuman body), an eye socket's width, so that the faces inside a
+/// socket, a nostril or the lips take the direction of the face round them.
+inline constexpr double kFaceRadiusH = 0.08;
+
+/// Where scalp_triangles() looks, in metres and heights (+Y up).
+struct ScalpParams {
+  double neck_y = 0;          ///< nothing below this is scalp
+  double max_distance_m = 0;  ///< hair within this distance marks the triangle
+  /// Hair standing off the head up to this far along the triangle's outward normal marks it
+  /// too (no more than max_distance_m: the distance alone decides)...
+  double under_hair_m = 0;
+  /// ...on triangles at least this far above neck_y.
+  double under_hair_min_height_m = 0;
+  /// The face: triangles lower than this whose surroundings within face_radius_m face
+  /// forward (their area-weighted normal's +Z over kFaceNormalZ) are never scalp.
+  double face_below_y = -std::numeric_limits<double>::infinity();
+  double face_radius_m = 0;
+};
+
+/// Marks (1) the body triangles whose centroid lies at or above `neck_y` and
 ///  - within `max_distance_m` of the hair mesh, or
 ///  - not facing forward (kFaceNormalZ), under hair that stands off the head: hair within
 ///    `max_distance_m` of a point on the triangle's outward normal (right-hand winding) at a
 ///    multiple of `max_distance_m` up to `under_hair_m` out. A bob's shell stands 2-4 cm off
 ///    the back of the head and its hair is rooted all over the scalp under it, where the
-///    distance alone marks only the crown and the nape. under_hair_m no more than
-///    max_distance_m: the distance alone decides. Only for triangles at least
+///    distance alone marks only the crown and the nape. Only for triangles at least
 ///    `under_hair_min_height_m` above `neck_y`: lower, at the bottom of the nape and under
 ///    the ears, hair standing off the head hangs past it from above (a ponytail's tail 2-4
-///    cm off the nape, long hair) and is not rooted there.
+///    cm off the nape, long hair) and is not rooted there;
+/// except the face: below `face_below_y` (the brows), where the body around the triangle
+/// (within face_radius_m of its centroid, an eye socket's size, so that the faces inside
+/// an eye socket, a nostril or the lips take the direction of the face round them) faces
+/// forward. A fringe or a lock hanging over the eyes and cheeks lies within max_distance_m
+/// of them, and hair is not rooted there (bob01, bob02: 7% of their strands grew from the
+/// face until session 22).
 /// Deterministic whatever the thread count.
 std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
-                                     const Triangles3i& body_triangles, double neck_y,
-                                     const PolyMesh& hair_mesh, double max_distance_m,
-                                     double under_hair_m, double under_hair_min_height_m);
+                                     const Triangles3i& body_triangles, const PolyMesh& hair_mesh,
+                                     const ScalpParams& params);
+
+/// Marks (1) the face as scalp_triangles() leaves it out: the triangles whose centroid lies
+/// below `below_y` and around which the body within `radius_m` faces forward.
+std::vector<uint8_t> face_triangles(const Points3f& body_vertices,
+                                    const Triangles3i& body_triangles, double below_y,
+                                    double radius_m);
 
 }  // namespace hair

@@ -25,6 +25,17 @@ constexpr double kHalfWidthDeg = 25;                       // ...and across it, 
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180; }
 
+/// The sphere's scalp settings: hair within kMaxDistance, under hair to `under_hair_m`
+/// from `min_height_m` above the neck, no face.
+ScalpParams scalp_params(double under_hair_m, double min_height_m) {
+  ScalpParams params;
+  params.neck_y = kNeckY;
+  params.max_distance_m = kMaxDistance;
+  params.under_hair_m = under_hair_m;
+  params.under_hair_min_height_m = min_height_m;
+  return params;
+}
+
 /// Direction from the centre at polar angle `polar_deg` (from +Y) and azimuth `azimuth_deg`
 /// (from +Z, the face, towards +X).
 Vec3 direction(double polar_deg, double azimuth_deg) {
@@ -88,9 +99,9 @@ TEST(Scalp, HairStandingOffTheHeadMarksTheScalpUnderItButNotTheFace) {
   add_sheet(hair, 180, 0.03);
   add_sheet(hair, 0, 0.03);
   const std::vector<uint8_t> with_under =
-      scalp_triangles(body.vertices, body.triangles, kNeckY, hair, kMaxDistance, kUnderHair, 0);
+      scalp_triangles(body.vertices, body.triangles, hair, scalp_params(kUnderHair, 0));
   const std::vector<uint8_t> by_distance =
-      scalp_triangles(body.vertices, body.triangles, kNeckY, hair, kMaxDistance, 0, 0);
+      scalp_triangles(body.vertices, body.triangles, hair, scalp_params(0, 0));
   EXPECT_EQ(marked_share_under(body, with_under, 90), 1.0);
   EXPECT_EQ(marked_share_under(body, by_distance, 90), 1.0);
   EXPECT_EQ(marked_share_under(body, with_under, 180), 1.0);
@@ -108,11 +119,11 @@ TEST(Scalp, HairStandingOffTheHeadMarksTheScalpUnderItButNotTheFace) {
   // A shell farther off than scalp_under_hair reaches marks nothing under it.
   PolyMesh far;
   add_sheet(far, 180, 0.06);
-  EXPECT_EQ(marked_share_under(body,
-                               scalp_triangles(body.vertices, body.triangles, kNeckY, far,
-                                               kMaxDistance, kUnderHair, 0),
-                               180),
-            0.0);
+  EXPECT_EQ(
+      marked_share_under(
+          body, scalp_triangles(body.vertices, body.triangles, far, scalp_params(kUnderHair, 0)),
+          180),
+      0.0);
 }
 
 // Hair standing off the lowest part of the head hangs past it from above (a ponytail's tail
@@ -125,8 +136,8 @@ TEST(Scalp, HairStandingOffTheHeadMarksNoScalpNearTheNeck) {
   add_sheet(hair, 90, 0.005);
   add_sheet(hair, 180, 0.03);
   constexpr double kMinHeight = 0.04;
-  const std::vector<uint8_t> scalp = scalp_triangles(body.vertices, body.triangles, kNeckY, hair,
-                                                     kMaxDistance, kUnderHair, kMinHeight);
+  const std::vector<uint8_t> scalp =
+      scalp_triangles(body.vertices, body.triangles, hair, scalp_params(kUnderHair, kMinHeight));
   int64_t low_behind = 0, high_behind = 0, low_side = 0;
   for (Eigen::Index t = 0; t < body.triangles.rows(); ++t) {
     Vec3 centroid = Vec3::Zero();
@@ -155,6 +166,53 @@ TEST(Scalp, HairStandingOffTheHeadMarksNoScalpNearTheNeck) {
   EXPECT_GT(low_behind, 5);
   EXPECT_GT(high_behind, 5);
   EXPECT_GT(low_side, 5);
+}
+
+// A fringe lying on the face (5 mm off, in front, azimuth 0) marks the scalp under it by
+// distance only above the brows (face_below_y): below, the face is never scalp. Hair lying
+// on the side of the head (azimuth 90) marks it down to the neck: the body there faces
+// sideways. Without face_below_y the fringe marks the face too.
+TEST(Scalp, AFringeOverTheFaceMarksNoScalpBelowTheBrows) {
+  const testing::SphereMesh body = testing::icosphere(4, kRadius, kCentre);
+  PolyMesh hair;
+  add_sheet(hair, 0, 0.005);
+  add_sheet(hair, 90, 0.005);
+  constexpr double kBrowAboveNeck = 0.05;  // polar angle 60 degrees
+  ScalpParams params = scalp_params(0, 0);
+  params.face_below_y = kNeckY + kBrowAboveNeck;
+  params.face_radius_m = 0.02;
+  const std::vector<uint8_t> scalp = scalp_triangles(body.vertices, body.triangles, hair, params);
+  const std::vector<uint8_t> without_face =
+      scalp_triangles(body.vertices, body.triangles, hair, scalp_params(0, 0));
+  int64_t face = 0, brow = 0, side = 0;
+  for (Eigen::Index t = 0; t < body.triangles.rows(); ++t) {
+    Vec3 centroid = Vec3::Zero();
+    for (int k = 0; k < 3; ++k)
+      centroid += body.vertices.row(body.triangles(t, k)).cast<double>().transpose() / 3;
+    const Vec3 from_centre = (centroid - kCentre).normalized();
+    const double azimuth_deg =
+        std::atan2(from_centre.x(), from_centre.z()) * 180 / std::numbers::pi;
+    const double polar_deg = std::acos(from_centre.y()) * 180 / std::numbers::pi;
+    if (polar_deg < kPolarFirstDeg + 5 || polar_deg > kPolarLastDeg - 5) continue;
+    const double height_m = centroid.y() - kNeckY;
+    const auto t_index = static_cast<size_t>(t);
+    if (std::abs(azimuth_deg) < 15) {
+      if (height_m < kBrowAboveNeck) {
+        ++face;
+        EXPECT_EQ(scalp[t_index], 0) << "face at " << height_m << " m above the neck";
+        EXPECT_EQ(without_face[t_index], 1);
+      } else {
+        ++brow;
+        EXPECT_EQ(scalp[t_index], 1) << "above the brows at " << height_m << " m";
+      }
+    } else if (std::abs(azimuth_deg - 90) < 15) {
+      ++side;
+      EXPECT_EQ(scalp[t_index], 1) << "side of the head at " << height_m << " m";
+    }
+  }
+  EXPECT_GT(face, 5);
+  EXPECT_GT(brow, 5);
+  EXPECT_GT(side, 5);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "hair/cluster/hair_clustering.h"
 #include "hair/cluster/typeify.h"
 #include "hair/extract/extract.h"
+#include "hair/extract/scalp.h"
 #include "hair/geom/point_index.h"
 #include "hair/grow/card_surfaces.h"
 #include "hair/grow/strand_growing.h"
@@ -575,6 +576,53 @@ TEST(SynthGrow, LongHairHangingPastTheNapeIsNotRootedUnderIt) {
     EXPECT_LT(2 * low_now, low_to_the_neck) << name;
     EXPECT_LT(static_cast<double>(low_now), 0.05 * static_cast<double>(grown_count)) << name;
   }
+}
+
+// Hair hanging over the face (hair-synth's face_locks: locks framing the face from the
+// temples; long_straight and bob, whose front streams and cards hang beside the cheeks)
+// lies within scalp_distance_h of the eyes and cheeks, and its truth is rooted above the
+// brows. Extract leaves the face out of the scalp (scalp_face_below_top_h): no grown root
+// lies below the brow line within 4 cm (0.17 H) of the face's front, where without the
+// rule some do.
+TEST(SynthGrow, NoHairIsRootedOnTheFace) {
+  PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
+  body.vertices *= 0.1f;
+  const double top_y = body.vertices.col(1).maxCoeff();
+  ExtractParams no_face_rule;
+  no_face_rule.scalp_face_below_top_h = 2;  // below the neck: no face
+  int64_t on_face_without = 0;
+  for (const char* name : {"face_locks", "long_straight", "bob"}) {
+    int64_t on_face = 0, grown_count = 0, without = 0;
+    for (uint32_t seed : {1u, 2u}) {
+      SCOPED_TRACE(std::string(name) + ", seed " + std::to_string(seed));
+      const SynthModel model =
+          generate_model(varied_spec(preset(name), seed), body, seed, kTrueStrandsPerStream);
+      auto roots_on_face = [&](const Grown& grown) {
+        const double h = grown.head_height_m;
+        const Triangles3i triangles = fan_triangulation(body.face_offsets, body.face_vertices);
+        const std::vector<uint8_t> face =
+            face_triangles(body.vertices, triangles, top_y - 0.4 * h, kFaceRadiusH * h);
+        const StrandSet& strands = grown.result.strands;
+        const auto& root_triangle =
+            std::get<std::vector<int32_t>>(strands.strand_attributes.at("root_triangle"));
+        int64_t count = 0;
+        for (int32_t t : root_triangle) count += face[static_cast<size_t>(t)];
+        return count;
+      };
+      const Grown grown = grow_model(model, body, name);
+      grown_count += grown.result.strands.strand_count();
+      on_face += roots_on_face(grown);
+      without += roots_on_face(
+          grow_model(model, body, name, GrowParams{}.join_continued_flow, no_face_rule));
+    }
+    std::printf(
+        "[ synth    ] %s: %lld of %lld grown roots on the face (%lld without the face rule)\n",
+        name, static_cast<long long>(on_face), static_cast<long long>(grown_count),
+        static_cast<long long>(without));
+    EXPECT_EQ(on_face, 0) << name;
+    on_face_without += without;
+  }
+  EXPECT_GT(on_face_without, 50);
 }
 
 // Artists hide a card's end under the skin (bob01's front cards run into the forehead):
