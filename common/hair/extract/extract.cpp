@@ -1252,6 +1252,8 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   scalp.under_hair_min_height_m = params.scalp_under_hair_min_height_h * head_height_m;
   scalp.face_below_y = result.head.head_top_y - params.scalp_face_below_top_h * head_height_m;
   scalp.face_radius_m = kFaceRadiusH * head_height_m;
+  scalp.face_depth_m = kFaceDepthH * head_height_m;
+  scalp.face_half_width_m = kFaceHalfWidthH * head_height_m;
   result.scalp_triangle =
       scalp_triangles(result.body_vertices, result.body_triangles, result.hair_mesh, scalp);
   return result;

@@ -21,6 +21,14 @@ inline constexpr double kFaceNormalZ = 0.5;
 /// socket, a nostril or the lips take the direction of the face round them.
 inline constexpr double kFaceRadiusH = 0.08;
 
+/// ...and the box behind the face's front (its frontmost point between the neck and the
+/// brows, the nose's tip) in which every triangle below the brows is face, in H: 0.3 H deep
+/// (7.3 cm on the MakeHuman body) and 0.2 H (4.8 cm) to either side of the nose's tip. The
+/// insides of its eye sockets, nostrils and mouth, which face every way, lie 2-6 cm behind
+/// the nose's tip and within 4.7 cm of the middle; the sideburns 6 cm or more to the side.
+inline constexpr double kFaceDepthH = 0.3;
+inline constexpr double kFaceHalfWidthH = 0.2;
+
 /// Where scalp_triangles() looks, in metres and heights (+Y up).
 struct ScalpParams {
   double neck_y = 0;          ///< nothing below this is scalp
@@ -31,9 +39,13 @@ struct ScalpParams {
   /// ...on triangles at least this far above neck_y.
   double under_hair_min_height_m = 0;
   /// The face: triangles lower than this whose surroundings within face_radius_m face
-  /// forward (their area-weighted normal's +Z over kFaceNormalZ) are never scalp.
+  /// forward (their area-weighted normal's +Z over kFaceNormalZ), or that lie within
+  /// face_depth_m behind the face's front and face_half_width_m of its middle, are never
+  /// scalp (face_triangles()).
   double face_below_y = -std::numeric_limits<double>::infinity();
   double face_radius_m = 0;
+  double face_depth_m = 0;
+  double face_half_width_m = 0;
 };
 
 /// Marks (1) the body triangles whose centroid lies at or above `neck_y` and
@@ -46,21 +58,23 @@ struct ScalpParams {
 ///    `under_hair_min_height_m` above `neck_y`: lower, at the bottom of the nape and under
 ///    the ears, hair standing off the head hangs past it from above (a ponytail's tail 2-4
 ///    cm off the nape, long hair) and is not rooted there;
-/// except the face: below `face_below_y` (the brows), where the body around the triangle
-/// (within face_radius_m of its centroid, an eye socket's size, so that the faces inside
-/// an eye socket, a nostril or the lips take the direction of the face round them) faces
-/// forward. A fringe or a lock hanging over the eyes and cheeks lies within max_distance_m
-/// of them, and hair is not rooted there (bob01, bob02: 7% of their strands grew from the
-/// face until session 22).
+/// except the face (face_triangles()). A fringe or a lock hanging over the eyes and cheeks
+/// lies within max_distance_m of them, and hair is not rooted there (bob01, bob02: 7% of
+/// their strands grew from the face until session 22).
 /// Deterministic whatever the thread count.
 std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
                                      const Triangles3i& body_triangles, const PolyMesh& hair_mesh,
                                      const ScalpParams& params);
 
 /// Marks (1) the face as scalp_triangles() leaves it out: the triangles whose centroid lies
-/// below `below_y` and around which the body within `radius_m` faces forward.
+/// below `below_y` (the brows) and above `neck_y`, and around which the body within
+/// `radius_m` faces forward (the area-weighted normal's +Z over kFaceNormalZ), or which lie
+/// within `depth_m` behind the face's front (the body's vertex of largest Z between the
+/// neck and below_y) and within `half_width_m` of it across (X): the insides of the eye
+/// sockets, the nostrils and the mouth, whose faces and neighbourhoods face every way.
 std::vector<uint8_t> face_triangles(const Points3f& body_vertices,
-                                    const Triangles3i& body_triangles, double below_y,
-                                    double radius_m);
+                                    const Triangles3i& body_triangles, double neck_y,
+                                    double below_y, double radius_m, double depth_m,
+                                    double half_width_m);
 
 }  // namespace hair

@@ -601,7 +601,8 @@ TEST(SynthGrow, NoHairIsRootedOnTheFace) {
         const double h = grown.head_height_m;
         const Triangles3i triangles = fan_triangulation(body.face_offsets, body.face_vertices);
         const std::vector<uint8_t> face =
-            face_triangles(body.vertices, triangles, top_y - 0.4 * h, kFaceRadiusH * h);
+            face_triangles(body.vertices, triangles, top_y - h, top_y - 0.4 * h, kFaceRadiusH * h,
+                           kFaceDepthH * h, kFaceHalfWidthH * h);
         const StrandSet& strands = grown.result.strands;
         const auto& root_triangle =
             std::get<std::vector<int32_t>>(strands.strand_attributes.at("root_triangle"));
