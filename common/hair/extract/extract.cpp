@@ -1254,6 +1254,7 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   scalp.face_radius_m = kFaceRadiusH * head_height_m;
   scalp.face_depth_m = kFaceDepthH * head_height_m;
   scalp.face_half_width_m = kFaceHalfWidthH * head_height_m;
+  scalp.ear_thickness_m = kEarThicknessH * head_height_m;
   result.scalp_triangle =
       scalp_triangles(result.body_vertices, result.body_triangles, result.hair_mesh, scalp);
   return result;

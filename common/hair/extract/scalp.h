@@ -29,6 +29,12 @@ inline constexpr double kFaceRadiusH = 0.08;
 inline constexpr double kFaceDepthH = 0.3;
 inline constexpr double kFaceHalfWidthH = 0.2;
 
+/// A fold of the body thinner than this along a triangle's inward normal, in head heights
+/// H, is an ear (thin_triangles()): 0.05 H (1.2 cm on the MakeHuman body, whose ears are
+/// 0.3-1.2 cm thick where hair over them lies within the scalp distance; its skull is 15
+/// cm across, its neck 10).
+inline constexpr double kEarThicknessH = 0.05;
+
 /// Where scalp_triangles() looks, in metres and heights (+Y up).
 struct ScalpParams {
   double neck_y = 0;          ///< nothing below this is scalp
@@ -46,6 +52,9 @@ struct ScalpParams {
   double face_radius_m = 0;
   double face_depth_m = 0;
   double face_half_width_m = 0;
+  /// Nor an ear: a triangle behind which the body is thinner than this along its inward
+  /// normal (0: no such test).
+  double ear_thickness_m = 0;
 };
 
 /// Marks (1) the body triangles whose centroid lies at or above `neck_y` and
@@ -58,9 +67,10 @@ struct ScalpParams {
 ///    `under_hair_min_height_m` above `neck_y`: lower, at the bottom of the nape and under
 ///    the ears, hair standing off the head hangs past it from above (a ponytail's tail 2-4
 ///    cm off the nape, long hair) and is not rooted there;
-/// except the face (face_triangles()). A fringe or a lock hanging over the eyes and cheeks
-/// lies within max_distance_m of them, and hair is not rooted there (bob01, bob02: 7% of
-/// their strands grew from the face until session 22).
+/// except the face (face_triangles()) and the ears (thin_triangles()). A fringe or a lock
+/// hanging over the eyes and cheeks lies within max_distance_m of them, and hair lying
+/// over an ear too, and hair is not rooted there (bob01, bob02: 7% of their strands grew
+/// from the face until session 22; each of the ten MakeHuman meshes 70-222 from the ears).
 /// Deterministic whatever the thread count.
 std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
                                      const Triangles3i& body_triangles, const PolyMesh& hair_mesh,
@@ -76,5 +86,14 @@ std::vector<uint8_t> face_triangles(const Points3f& body_vertices,
                                     const Triangles3i& body_triangles, double neck_y,
                                     double below_y, double radius_m, double depth_m,
                                     double half_width_m);
+
+/// Marks (1) the triangles whose centroid lies above `neck_y` and behind which the body is
+/// thinner than `max_thickness_m`: a ray from the centroid along the inward normal (left-
+/// hand of the right-hand winding's outward one) meets another triangle within that
+/// distance. On a head, the ears (and the insides of the mouth and eye sockets, which the
+/// face takes too).
+std::vector<uint8_t> thin_triangles(const Points3f& body_vertices,
+                                    const Triangles3i& body_triangles, double neck_y,
+                                    double max_thickness_m);
 
 }  // namespace hair

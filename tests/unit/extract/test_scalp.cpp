@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -213,6 +214,68 @@ TEST(Scalp, AFringeOverTheFaceMarksNoScalpBelowTheBrows) {
   EXPECT_GT(face, 5);
   EXPECT_GT(brow, 5);
   EXPECT_GT(side, 5);
+}
+
+// An ear: a slab 6 mm thick, 3 cm tall and 2 cm wide standing out from the side of the
+// head (azimuth 90, its inner edge 0.5 mm off the sphere), as a closed box. Hair lying on
+// the side of the head over it (a sheet 5 mm off the sphere, reaching round the slab)
+// marks the sphere under it as scalp, but not the slab: the body behind the slab's faces
+// is thinner than ear_thickness_m along their inward normal.
+TEST(Scalp, AnEarUnderHairIsNotScalp) {
+  testing::SphereMesh body = testing::icosphere(4, kRadius, kCentre);
+  const Vec3 side = direction(60, 90);  // the ear's middle, out from the centre
+  const Vec3 up = (Vec3::UnitY() - Vec3::UnitY().dot(side) * side).normalized();
+  const Vec3 across = side.cross(up);
+  // Corners: out in [0.5 mm, 20 mm] from the surface along `side`, +-15 mm along `up`,
+  // +-3 mm along `across`.
+  const testing::SphereMesh head = body;
+  std::vector<Vec3> corner;
+  for (double out : {0.0005, 0.02})
+    for (double along_up : {-0.015, 0.015})
+      for (double along_across : {-0.003, 0.003})
+        corner.push_back(kCentre + (kRadius + out) * side + along_up * up + along_across * across);
+  const auto first = static_cast<int32_t>(body.vertices.rows());
+  body.vertices.conservativeResize(first + 8, 3);
+  for (int k = 0; k < 8; ++k)
+    body.vertices.row(first + k) = corner[static_cast<size_t>(k)].cast<float>().transpose();
+  // Box faces (index = out * 4 + up * 2 + across), wound outward.
+  const std::vector<std::array<int, 4>> quads = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                                 {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  const auto before = body.triangles.rows();
+  body.triangles.conservativeResize(before + 12, 3);
+  for (size_t q = 0; q < quads.size(); ++q) {
+    const auto& v = quads[q];
+    body.triangles.row(before + 2 * static_cast<Eigen::Index>(q)) << first + v[0], first + v[1],
+        first + v[2];
+    body.triangles.row(before + 2 * static_cast<Eigen::Index>(q) + 1) << first + v[0], first + v[2],
+        first + v[3];
+  }
+  PolyMesh hair;
+  add_sheet(hair, 90, 0.005);
+  add_sheet(hair, 90, 0.021);  // over the ear's outer edge
+  ScalpParams params = scalp_params(0, 0);
+  params.ear_thickness_m = 0.012;
+  const std::vector<uint8_t> thin =
+      thin_triangles(body.vertices, body.triangles, kNeckY, params.ear_thickness_m);
+  const std::vector<uint8_t> scalp = scalp_triangles(body.vertices, body.triangles, hair, params);
+  const std::vector<uint8_t> with_ear =
+      scalp_triangles(body.vertices, body.triangles, hair, scalp_params(0, 0));
+  // The slab's two broad faces (the +-across sides, triangles 4-7 of its 12) are thin; the
+  // sphere is not.
+  for (Eigen::Index t = before; t < before + 12; ++t) {
+    const Eigen::Index face = (t - before) / 2;
+    if (face == 4 || face == 5) {
+      EXPECT_EQ(thin[static_cast<size_t>(t)], 1) << "ear triangle " << t - before;
+      EXPECT_EQ(scalp[static_cast<size_t>(t)], 0) << "ear triangle " << t - before;
+      EXPECT_EQ(with_ear[static_cast<size_t>(t)], 1) << "ear triangle " << t - before;
+    }
+  }
+  int64_t head_thin = 0;
+  for (Eigen::Index t = 0; t < before; ++t) head_thin += thin[static_cast<size_t>(t)];
+  EXPECT_EQ(head_thin, 0);
+  EXPECT_EQ(
+      marked_share_under(head, std::vector<uint8_t>(scalp.begin(), scalp.begin() + before), 90),
+      1.0);
 }
 
 }  // namespace
