@@ -65,7 +65,7 @@ std::vector<uint8_t> face_triangles(const Points3f& body_vertices,
 
 std::vector<uint8_t> thin_triangles(const Points3f& body_vertices,
                                     const Triangles3i& body_triangles, double neck_y,
-                                    double max_thickness_m) {
+                                    double max_thickness_m, const std::vector<uint8_t>* only) {
   const Eigen::Index count = body_triangles.rows();
   std::vector<uint8_t> thin(static_cast<size_t>(count), 0);
   if (count == 0 || !(max_thickness_m > 0)) return thin;
@@ -86,7 +86,7 @@ std::vector<uint8_t> thin_triangles(const Points3f& body_vertices,
   const auto reach_m = static_cast<float>(0.5 * max_thickness_m + longest_edge_m);
 #pragma omp parallel for schedule(dynamic, 256)
   for (Eigen::Index t = 0; t < count; ++t) {
-    if (!(centroids(t, 1) > neck_y)) continue;
+    if (!(centroids(t, 1) > neck_y) || (only && !(*only)[static_cast<size_t>(t)])) continue;
     const auto corner = corners_of(body_vertices, body_triangles, t);
     const Eigen::Vector3d cross = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
     if (!(cross.norm() > 0)) continue;
@@ -125,16 +125,13 @@ std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
   const std::vector<uint8_t> face =
       face_triangles(body_vertices, body_triangles, params.neck_y, params.face_below_y,
                      params.face_radius_m, params.face_depth_m, params.face_half_width_m);
-  const std::vector<uint8_t> ear =
-      thin_triangles(body_vertices, body_triangles, params.neck_y, params.ear_thickness_m);
   const double max_distance_m = params.max_distance_m;
   std::vector<uint8_t> scalp(static_cast<size_t>(body_triangles.rows()), 0);
 #pragma omp parallel for schedule(static)
   for (Eigen::Index t = 0; t < body_triangles.rows(); ++t) {
     const auto corner = corners_of(body_vertices, body_triangles, t);
     const Eigen::Vector3d centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
-    if (centroid.y() < params.neck_y || face[static_cast<size_t>(t)] || ear[static_cast<size_t>(t)])
-      continue;
+    if (centroid.y() < params.neck_y || face[static_cast<size_t>(t)]) continue;
     if (hair_distance.is_within(centroid, max_distance_m)) {
       scalp[static_cast<size_t>(t)] = 1;
       continue;
@@ -151,6 +148,12 @@ std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
         break;
       }
   }
+  // The ears, tested only where the scalp would otherwise be (the ray casts are the costly
+  // part).
+  const std::vector<uint8_t> ear =
+      thin_triangles(body_vertices, body_triangles, params.neck_y, params.ear_thickness_m, &scalp);
+  for (size_t t = 0; t < scalp.size(); ++t)
+    if (ear[t]) scalp[t] = 0;
   return scalp;
 }
 

@@ -91,9 +91,10 @@ std::vector<uint8_t> face_triangles(const Points3f& body_vertices,
 /// thinner than `max_thickness_m`: a ray from the centroid along the inward normal (left-
 /// hand of the right-hand winding's outward one) meets another triangle within that
 /// distance. On a head, the ears (and the insides of the mouth and eye sockets, which the
-/// face takes too).
+/// face takes too). With `only` (one flag per triangle), only the flagged ones are tested.
 std::vector<uint8_t> thin_triangles(const Points3f& body_vertices,
                                     const Triangles3i& body_triangles, double neck_y,
-                                    double max_thickness_m);
+                                    double max_thickness_m,
+                                    const std::vector<uint8_t>* only = nullptr);
 
 }  // namespace hair
