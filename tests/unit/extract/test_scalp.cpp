@@ -66,6 +66,20 @@ void add_sheet(PolyMesh& mesh, double azimuth_deg, double height_m) {
     }
 }
 
+/// Where body triangle `t`'s centroid lies on the sphere: azimuth (from +Z, the face,
+/// towards +X) and polar angle (from +Y), degrees; height above the neck, metres.
+struct TrianglePlace {
+  double azimuth_deg = 0, polar_deg = 0, height_m = 0;
+};
+TrianglePlace place_of(const testing::SphereMesh& body, Eigen::Index t) {
+  Vec3 centroid = Vec3::Zero();
+  for (int k = 0; k < 3; ++k)
+    centroid += body.vertices.row(body.triangles(t, k)).cast<double>().transpose() / 3;
+  const Vec3 from_centre = (centroid - kCentre).normalized();
+  return {std::atan2(from_centre.x(), from_centre.z()) * 180 / std::numbers::pi,
+          std::acos(from_centre.y()) * 180 / std::numbers::pi, centroid.y() - kNeckY};
+}
+
 /// Of the body triangles under the middle of the sheet at `azimuth_deg` (centroid within
 /// 10 degrees of its middle across, 45-75 degrees down), the share marked.
 double marked_share_under(const testing::SphereMesh& body, const std::vector<uint8_t>& scalp,
@@ -141,15 +155,9 @@ TEST(Scalp, HairStandingOffTheHeadMarksNoScalpNearTheNeck) {
       scalp_triangles(body.vertices, body.triangles, hair, scalp_params(kUnderHair, kMinHeight));
   int64_t low_behind = 0, high_behind = 0, low_side = 0;
   for (Eigen::Index t = 0; t < body.triangles.rows(); ++t) {
-    Vec3 centroid = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-      centroid += body.vertices.row(body.triangles(t, k)).cast<double>().transpose() / 3;
-    const Vec3 from_centre = (centroid - kCentre).normalized();
-    const double azimuth_deg =
-        std::atan2(from_centre.x(), from_centre.z()) * 180 / std::numbers::pi;
-    const double polar_deg = std::acos(from_centre.y()) * 180 / std::numbers::pi;
-    if (polar_deg < kPolarFirstDeg + 5 || polar_deg > kPolarLastDeg - 5) continue;
-    const double height_m = centroid.y() - kNeckY;
+    const TrianglePlace place = place_of(body, t);
+    if (place.polar_deg < kPolarFirstDeg + 5 || place.polar_deg > kPolarLastDeg - 5) continue;
+    const double azimuth_deg = place.azimuth_deg, height_m = place.height_m;
     const auto marked = scalp[static_cast<size_t>(t)];
     if (std::abs(std::abs(azimuth_deg) - 180) < 15) {
       if (height_m < kMinHeight) {
@@ -187,15 +195,9 @@ TEST(Scalp, AFringeOverTheFaceMarksNoScalpBelowTheBrows) {
       scalp_triangles(body.vertices, body.triangles, hair, scalp_params(0, 0));
   int64_t face = 0, brow = 0, side = 0;
   for (Eigen::Index t = 0; t < body.triangles.rows(); ++t) {
-    Vec3 centroid = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-      centroid += body.vertices.row(body.triangles(t, k)).cast<double>().transpose() / 3;
-    const Vec3 from_centre = (centroid - kCentre).normalized();
-    const double azimuth_deg =
-        std::atan2(from_centre.x(), from_centre.z()) * 180 / std::numbers::pi;
-    const double polar_deg = std::acos(from_centre.y()) * 180 / std::numbers::pi;
-    if (polar_deg < kPolarFirstDeg + 5 || polar_deg > kPolarLastDeg - 5) continue;
-    const double height_m = centroid.y() - kNeckY;
+    const TrianglePlace place = place_of(body, t);
+    if (place.polar_deg < kPolarFirstDeg + 5 || place.polar_deg > kPolarLastDeg - 5) continue;
+    const double azimuth_deg = place.azimuth_deg, height_m = place.height_m;
     const auto t_index = static_cast<size_t>(t);
     if (std::abs(azimuth_deg) < 15) {
       if (height_m < kBrowAboveNeck) {
