@@ -582,8 +582,9 @@ TEST(SynthGrow, LongHairHangingPastTheNapeIsNotRootedUnderIt) {
 // temples; long_straight and bob, whose front streams and cards hang beside the cheeks)
 // lies within scalp_distance_h of the eyes and cheeks, and its truth is rooted above the
 // brows. Extract leaves the face out of the scalp (scalp_face_below_top_h): no grown root
-// lies below the brow line within 4 cm (0.17 H) of the face's front, where without the
-// rule some do.
+// lies on a triangle of the face as face_triangles() finds it below the brow line (0.4 H
+// under the crown), where with the face left in the scalp (the rule moved below the neck)
+// some do.
 TEST(SynthGrow, NoHairIsRootedOnTheFace) {
   PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
   body.vertices *= 0.1f;
