@@ -92,6 +92,10 @@ int main(int argc, char** argv) {
         "a bridge into the next input strand goes to its first point ahead within this angle "
         "of the strand's direction, not behind or beside it (0: always to its start)",
         hair::ParamRange::closed(0, 90));
+  p.add("bridge_paint_max_angle_deg", params.bridge_paint_max_angle_deg,
+        "...nor one whose way across the gap runs more than this angle off the clear paint of "
+        "the hair face nearest its middle (0: no such check)",
+        hair::ParamRange::closed(0, 90));
   p.add("follow_card_keep_h", params.follow_card_keep_h,
         "...and towards the surface of its own card (the group's faces) beyond this, in H "
         "(0: no such hold)",
@@ -113,6 +117,11 @@ int main(int argc, char** argv) {
   p.add("layer_climb_h", params.layer_climb_h,
         "a strand rooted under its layer climbs to it at an even slope within this length of "
         "its root, in H; 0: by at most layer_pull of a step per step",
+        hair::ParamRange::at_least(0));
+  p.add("root_heading_paint_h", params.root_heading_paint_h,
+        "over the first this much of its length (H), a strand heads over the scalp along the "
+        "clear paint of the hair face nearest it, where that runs within 60 degrees of its "
+        "field (0: the field alone)",
         hair::ParamRange::at_least(0));
   p.add("max_length_h", params.max_length_h, "no strand grows longer than this, in H",
         hair::ParamRange::above(0));

@@ -186,6 +186,13 @@ class GrowingContext {
             body_distance_->distance(point_of(strands.points, row));
     }
 
+    // The whole hair mesh with its paint: the strokes a bridge must not cut across, and
+    // the way a stub lies.
+    if (input.hair_triangles.rows() > 0 &&
+        input.hair_triangle_flow.rows() == input.hair_triangles.rows())
+      painted_hair_ =
+          std::make_unique<TriangleMeshDistance>(input.hair_vertices, input.hair_triangles);
+
     // Each group's own faces, for the hold on its card's surface.
     if (params.follow_card_keep_h > 0 && input.hair_triangles.rows() > 0)
       card_surfaces_ =
@@ -367,13 +374,41 @@ class GrowingContext {
     return std::nullopt;
   }
 
+  /// Whether a bridge from `from` to `to` runs more than bridge_paint_max_angle_deg off
+  /// the clear paint of the hair face nearest its middle (within follow_radius_h); false
+  /// where the gap is within a step, or no face near it has clear paint.
+  bool crosses_paint(const Vec3& from, const Vec3& to) const {
+    if (!(params_.bridge_paint_max_angle_deg > 0)) return false;
+    const Vec3 gap = to - from;
+    const double gap_m = gap.norm();
+    if (gap_m <= params_.step_h * h_) return false;
+    const std::optional<Vec3> flow = painted_flow_near(from + 0.5 * gap);
+    if (!flow) return false;
+    const double max_angle_rad = params_.bridge_paint_max_angle_deg * std::numbers::pi / 180;
+    return std::abs(gap.dot(*flow)) < std::cos(max_angle_rad) * gap_m;
+  }
+
+  /// The clear painted flow axis (unit, either sense) of the hair face nearest `point`,
+  /// where that face lies within follow_radius_h; std::nullopt where it does not, or its
+  /// paint is not clear, or no paint was given.
+  std::optional<Vec3> painted_flow_near(const Vec3& point) const {
+    if (!painted_hair_) return std::nullopt;
+    const TriangleMeshDistance::Nearest face = painted_hair_->nearest(point);
+    if (face.triangle < 0 || face.distance > params_.follow_radius_h * h_) return std::nullopt;
+    const Vec3 flow = point_of(input_.hair_triangle_flow, face.triangle);
+    if (!(flow.norm() > 0)) return std::nullopt;
+    return flow.normalized();
+  }
+
   /// The best input strand to continue into from `point` going `direction`, among
   /// strands of groups not yet visited and not of `excluded_cluster`: the nearest entry
   /// (weighted by how much it turns), from `preferred_cluster` if any qualifies; with
   /// `hanging_continuations_only`, only the start of a tail or braid after its band.
+  /// `from_card`: the strand is at the end of a card it followed, not of its field.
   std::optional<StrandEntry> next_entry(const Vec3& point, const Vec3& direction,
                                         const std::vector<int32_t>& visited_groups,
                                         int32_t preferred_cluster, int32_t excluded_cluster,
+                                        bool from_card,
                                         bool hanging_continuations_only = false) const {
     const StrandSet& strands = input_.input_strands;
     double radius_m = params_.continue_radius_h * h_;
@@ -429,6 +464,13 @@ class GrowingContext {
       if (!into_continuation && params_.bridge_max_angle_deg > 0 &&
           !hangs_off_scalp_[static_cast<size_t>(entry.strand)] &&
           !bridge_target(entry, point, direction))
+        continue;
+      // Nor from card to card across the paint between them (bridge_paint_max_angle_deg).
+      // Out of the field a strand may rise across the hair it leaves into a card stacked
+      // on it (a tuft standing on short01's cap, which no other hair reaches), as hair
+      // rooted under such a tuft does.
+      if (from_card && !into_continuation && !hangs_off_scalp_[static_cast<size_t>(entry.strand)] &&
+          crosses_paint(point, bridge_target(entry, point, direction).value_or(entry_start(entry))))
         continue;
       // Not behind us by more than the radius allows, and not across the gap sideways.
       Vec3 gap = start - point;
@@ -504,9 +546,16 @@ class GrowingContext {
   std::vector<double> length_to_tip_m_;
   std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
   CardSurfaces card_surfaces_;  ///< empty without follow_card_keep_h or the hair mesh
+  /// The whole hair mesh; null without its painted flow.
+  std::unique_ptr<TriangleMeshDistance> painted_hair_;
   std::vector<double> height_m_;                         ///< per input point, with layers
   bool any_type_roots_ = false;
 };
+
+/// Near its root a strand heads the paint's way where the paint runs within this angle of
+/// its field (GrowParams::root_heading_paint_h): as continue_max_angle_deg, a turn the
+/// hair can take; paint farther off belongs to hair crossing over it.
+const double kRootPaintMinCos = std::cos(60 * std::numbers::pi / 180);
 
 /// Steps between two pulls of a strand towards its layer's height.
 constexpr int kLayerEvery = 3;
@@ -553,6 +602,7 @@ class StrandGrower {
         lost_m_(params_.follow_radius_h * context.input().head_height_m),
         keep_m_(params_.follow_keep_h * context.input().head_height_m),
         card_keep_m_(params_.follow_card_keep_h * context.input().head_height_m),
+        root_heading_m_(params_.root_heading_paint_h * context.input().head_height_m),
         cluster_(root_cluster) {}
 
   /// The strand from `root`; `reference_row` is the input-strand point nearest it.
@@ -633,6 +683,7 @@ class StrandGrower {
       if (!d1) break;
       std::optional<Vec3> d2 = field_->direction(point + 0.5 * step_m_ * *d1);
       if (!d2) break;
+      if (length_m + 0.5 * step_m_ < root_heading_m_) d2 = heading_along_paint(point, *d2);
       Vec3 next = point + step_m_ * *d2;
       if (context_.layered() && ++steps_since_layer == kLayerEvery) {
         layer_step = towards_layer(next, reference_row, length_m + step_m_, cursor, climb_per_m) /
@@ -679,6 +730,26 @@ class StrandGrower {
                                                       : params_.layer_pull * step_m_) *
         kLayerEvery;
     return up.normalized() * std::clamp(target_m - height_m, -pull_m, pull_m);
+  }
+
+  /// The field's direction `field_direction` at `point`, turned over the scalp onto the
+  /// clear paint of the hair face nearest `point` (GrowingContext::painted_flow_near())
+  /// where that runs within kRootPaintMaxAngleDeg of it: the paint's part along the body's
+  /// surface, in the field's sense and as long as the field's, plus the field's own part
+  /// off the surface (root_heading_paint_h). Unchanged where no such paint is near, or the
+  /// paint runs within about 65 degrees of straight off the body.
+  Vec3 heading_along_paint(const Vec3& point, const Vec3& field_direction) const {
+    const std::optional<Vec3> flow = context_.painted_flow_near(point);
+    if (!flow || std::abs(flow->dot(field_direction)) < kRootPaintMinCos) return field_direction;
+    Vec3 normal = body_.gradient(point);
+    if (!(normal.norm() > 0)) return field_direction;
+    normal.normalize();
+    Vec3 paint_over = *flow - flow->dot(normal) * normal;
+    const Vec3 field_over = field_direction - field_direction.dot(normal) * normal;
+    if (!(paint_over.norm() > 0.4) || !(field_over.norm() > 0)) return field_direction;
+    paint_over.normalize();
+    if (paint_over.dot(field_over) < 0) paint_over = -paint_over;
+    return (paint_over * field_over.norm() + normal * field_direction.dot(normal)).normalized();
   }
 
   /// 2. The input strand to follow first.
@@ -764,8 +835,8 @@ class StrandGrower {
   /// false: the strand ends here.
   bool go_on() {
     const Vec3 point = strand_.points.back();
-    std::optional<StrandEntry> entry =
-        context_.next_entry(point, direction_, visited_, cluster_, group_ < 0 ? root_cluster_ : -1);
+    std::optional<StrandEntry> entry = context_.next_entry(
+        point, direction_, visited_, cluster_, group_ < 0 ? root_cluster_ : -1, group_ >= 0);
     if (entry) {
       enter(*entry);
       return true;
@@ -829,7 +900,7 @@ class StrandGrower {
       heading = *d;
       point = strand_.points.back();
       if (std::optional<StrandEntry> entry =
-              context_.next_entry(point, heading, visited_, cluster_, -1, true)) {
+              context_.next_entry(point, heading, visited_, cluster_, -1, false, true)) {
         direction_ = heading;
         enter(*entry);
         return true;
@@ -844,7 +915,7 @@ class StrandGrower {
   const OrientationField* field_;
   const BodySdf& body_;
   const int32_t root_cluster_;
-  const double step_m_, clearance_m_, lost_m_, keep_m_, card_keep_m_;
+  const double step_m_, clearance_m_, lost_m_, keep_m_, card_keep_m_, root_heading_m_;
   GrowingStrand strand_;
   Vec3 direction_ = Vec3::Zero();  ///< of the last step
   std::vector<int32_t> visited_;   ///< groups followed or entered
@@ -1030,6 +1101,20 @@ Vec3 stub_direction(const StrandSet& strands, int32_t strand, int64_t row, const
   return along.normalized();
 }
 
+/// A stub's `direction` (stub_direction()) turned onto the painted flow there: `flow`
+/// (unit axis, either sense) less its part along the scalp's `normal`, in the sense of
+/// `direction`, where `direction` is not the normal itself (it then says nothing of the
+/// sense) and the paint does not run within about 65 degrees of straight into the scalp;
+/// else `direction` as it was.
+Vec3 along_paint(const Vec3& direction, const Vec3& normal, const std::optional<Vec3>& flow) {
+  if (!flow) return direction;
+  Vec3 tangent = *flow - flow->dot(normal) * normal;
+  const double tangent_norm = tangent.norm();
+  const double sense = tangent.dot(direction);
+  if (!(tangent_norm > 0.4) || direction.dot(normal) > 0.999 || sense == 0) return direction;
+  return (sense > 0 ? tangent : -tangent) / tangent_norm;
+}
+
 }  // namespace
 
 GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
@@ -1189,10 +1274,10 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     GrowingStrand& strand = grown[i];
     if (strand.points.size() < 2) {
       Vec3 normal = roots.normals.row(static_cast<Eigen::Index>(i)).cast<double>().transpose();
-      Vec3 step_end = strand.points.front() +
-                      params.step_h * h *
-                          stub_direction(strands, context.strand_of_point(reference_row[i]),
-                                         reference_row[i], normal);
+      Vec3 direction = stub_direction(strands, context.strand_of_point(reference_row[i]),
+                                      reference_row[i], normal);
+      direction = along_paint(direction, normal, context.painted_flow_near(strand.points.front()));
+      Vec3 step_end = strand.points.front() + params.step_h * h * direction;
       if (body.push_out(step_end, params.body_clearance_h * h)) ++strand.pushed_out;
       strand.points.push_back(step_end);
       strand.rules.push_back(GrowRule::field);

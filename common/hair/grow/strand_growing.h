@@ -115,6 +115,17 @@ struct GrowParams {
   /// (short01's spikes chained so round its crown: grown along the paint 77.7% -> 82.5%).
   /// 0: to the start of any strand next_entry() finds.
   double bridge_max_angle_deg = 45;
+  /// Nor does a bridge cut across the painted hair: where the face of the hair mesh nearest
+  /// the middle of a gap (within follow_radius_h) has clear paint
+  /// (GrowInput::hair_triangle_flow), a strand whose way across the gap runs more than this
+  /// angle off the strokes there is not continued into that strand. Hair that runs on
+  /// past the end of its card into the next runs along the hair painted between them;
+  /// short01's spikes, stacked over its cap at every angle, ended tip against base and the
+  /// strands hopped from one to the next across the cap's strokes (its bridges ran 27%
+  /// along the paint). From card to card only: out of its field, a strand may rise across
+  /// the hair it leaves into a card stacked on it (a tuft on a cap that no other hair
+  /// reaches). 30: within what hair-grow-report counts as along the flow. 0: no check.
+  double bridge_paint_max_angle_deg = 30;
   /// Where the input gives the hair mesh's faces (GrowInput::hair_triangles), a strand
   /// following a group also drifts back towards the nearest point of that group's own
   /// faces (its card's surface) where it lies farther than follow_card_keep_h from them,
@@ -142,6 +153,13 @@ struct GrowParams {
   /// degrees) and steeply under a shell standing off it (bob01's, 2-4 cm: 45-65 degrees),
   /// as hair with volume at its roots does. 0: layer_pull from the root on.
   double layer_climb_h = 0.08;
+  /// Over the first this much of its length along the field (H), a strand heads over the
+  /// scalp the way the paint runs on the hair face nearest it (within follow_radius_h,
+  /// where the paint is clear and within 60 degrees of the field): near the scalp the
+  /// field is an average of seeds 5-10 mm above, in voxels of field_voxel_h, and the paint
+  /// of the hair right over a root says best which way the hair there leaves it. Its rise
+  /// off the scalp stays the field's and the climb's (layer_climb_h). 0: the field alone.
+  double root_heading_paint_h = 0.06;
   int max_points_per_strand = 2000;
   /// No strand grows longer than this (a guard against strands that wander from group to
   /// group; the longest MakeHuman hair, long01, is about 3.5 H).

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -829,6 +830,97 @@ TEST(StrandGrowing, BridgesGoOnAheadNotBackOrSidewaysToTheNextCard) {
   EXPECT_GT(stacked_start.bridged_back, stacked_start.ending_beyond / 2);
 }
 
+/// Three cards down card 0's meridian: a root card (group 0, polar 10-30 degrees, 4 mm
+/// out), a card stacked 6 mm over its end (group 1, 25-45 degrees) and one more beyond a
+/// 5 degree (9 mm) gap (group 2, 50-62 degrees, its tip over the scalp), both middle and
+/// of their own clusters; under the gap a painted patch (4 mm out, polar 40-55 degrees,
+/// 3 cm wide, no group) whose strokes run down the meridian (`paint_along`) or round the
+/// head across it.
+GrowInput cards_over_painted_gap(bool paint_along) {
+  GrowInput input = head_sphere_input("painted gap");
+  std::vector<Points3f> rails;
+  std::vector<int32_t> group;
+  const std::array<std::array<double, 3>, 3> cards{
+      {{kCardOffset, 10, 30}, {kCardOffset + 0.006, 25, 45}, {kCardOffset + 0.006, 50, 62}}};
+  for (int32_t c = 0; c < 3; ++c)
+    for (int k = 0; k < 5; ++k) {
+      rails.push_back(card_zero_rail(0.006 * k - 0.012, cards[c][0], cards[c][1], cards[c][2]));
+      group.push_back(c);
+    }
+  input.input_strands = strand_set_from_polylines(rails);
+  input.input_strands.strand_attributes["group"] = group;
+  input.group_type = {GroupType::root_free, GroupType::middle, GroupType::middle};
+  input.group_cluster = {0, 1, 2};
+  // The patch: a 7 x 4 grid of points, quads fanned into triangles.
+  const CardFrame frame = card_frame(0);
+  constexpr int kAlong = 7, kAcross = 4;
+  input.hair_vertices.resize(kAlong * kAcross, 3);
+  for (int i = 0; i < kAlong; ++i)
+    for (int j = 0; j < kAcross; ++j)
+      input.hair_vertices.row(i * kAcross + j) =
+          card_zero_rail(0.01 * j - 0.015, kCardOffset, 40 + 2.5 * i, 40 + 2.5 * i).row(0);
+  std::vector<int64_t> face_offsets{0};
+  std::vector<int32_t> face_vertices, face_group;
+  for (int i = 0; i + 1 < kAlong; ++i)
+    for (int j = 0; j + 1 < kAcross; ++j) {
+      for (int v :
+           {i * kAcross + j, (i + 1) * kAcross + j, (i + 1) * kAcross + j + 1, i * kAcross + j + 1})
+        face_vertices.push_back(v);
+      face_offsets.push_back(static_cast<int64_t>(face_vertices.size()));
+      face_group.push_back(-1);
+    }
+  fan_triangulation_with_groups(face_offsets, face_vertices, face_group, input.hair_triangles,
+                                input.hair_triangle_group);
+  input.hair_triangle_flow.resize(input.hair_triangles.rows(), 3);
+  const Vec3 down_the_gap = frame.out * std::cos(radians(47.5)) - kUp * std::sin(radians(47.5));
+  const Vec3 flow = paint_along ? down_the_gap : frame.side;
+  for (Eigen::Index t = 0; t < input.hair_triangles.rows(); ++t)
+    input.hair_triangle_flow.row(t) = flow.transpose().cast<float>();
+  return input;
+}
+
+/// How many strands rooted under the root card of cards_over_painted_gap() end on the
+/// card beyond the gap (past polar 50 degrees).
+int64_t strands_past_the_gap(const GrowResult& result) {
+  int64_t past = 0;
+  for (int64_t s = 0; s < result.strands.strand_count(); ++s)
+    if (polar_in_card(0, root_of(result.strands, s)) >= radians(10) &&
+        std::abs(lateral_in_card(0, root_of(result.strands, s))) <= 0.012 &&
+        polar_in_card(0, last_of(result.strands, s)) > radians(50))
+      ++past;
+  return past;
+}
+
+// Nor does a bridge cut across the painted hair (GrowParams::bridge_paint_max_angle_deg):
+// from the end of the stacked card, the strands bridge the 9 mm gap down the meridian into
+// the card beyond where the paint under the gap runs down the meridian too, and end with
+// their card where it runs round the head, across the gap; without the check they bridge
+// either way. Out of the field, into the stacked card, no such check: the strands reach it
+// whatever the paint.
+TEST(StrandGrowing, BridgesFromCardToCardDoNotCutAcrossThePaint) {
+  const GrowParams params = params_with(kStrandCount);
+  GrowParams unchecked = params;
+  unchecked.bridge_paint_max_angle_deg = 0;
+  const GrowInput along = cards_over_painted_gap(true);
+  const GrowInput across = cards_over_painted_gap(false);
+  const int64_t past_along = strands_past_the_gap(grow_strands(along, params));
+  const GrowResult across_result = grow_strands(across, params);
+  const int64_t past_across = strands_past_the_gap(across_result);
+  const int64_t past_unchecked = strands_past_the_gap(grow_strands(across, unchecked));
+  int64_t on_stacked = 0;
+  for (int64_t s = 0; s < across_result.strands.strand_count(); ++s)
+    if (polar_in_card(0, last_of(across_result.strands, s)) > radians(40)) ++on_stacked;
+  std::printf(
+      "[ grow     ] painted gap: %lld strands bridge it where the paint runs along it, %lld where "
+      "it runs across (%lld without the check); %lld reach the stacked card's end\n",
+      static_cast<long long>(past_along), static_cast<long long>(past_across),
+      static_cast<long long>(past_unchecked), static_cast<long long>(on_stacked));
+  EXPECT_GT(past_along, 30);
+  EXPECT_EQ(past_across, 0);
+  EXPECT_GE(past_unchecked, past_along);
+  EXPECT_GT(on_stacked, 30);
+}
+
 /// Height over the sphere of a shell card at polar angle `polar_deg`: 4 mm at its root
 /// (10 degrees), rising smoothly to 3.5 cm by 40 degrees and staying so.
 double shell_height_m(double polar_deg) {
@@ -1275,6 +1367,151 @@ TEST(StrandGrowing, AStrandThatCannotLeaveItsRootLiesAlongTheHairThere) {
   std::printf("[ grow     ] sphere: %lld strands beyond the rails' tips take one step along them\n",
               static_cast<long long>(stubs));
   EXPECT_GT(stubs, 20);
+}
+
+/// Twelve rails down the meridians of the cap (30 degrees apart round the head, polar
+/// 5-40 degrees, 4 mm out; one root-connected group) and, over them, a painted cap without
+/// groups (4 mm out, polar 2-50 degrees) whose strokes run `paint_turn_deg` round the head
+/// from down the meridian.
+GrowInput meridians_under_turned_paint(double paint_turn_deg) {
+  GrowInput input = head_sphere_input("turned paint");
+  std::vector<Points3f> rails;
+  auto on_sphere = [](double polar_deg, double azimuth_deg, double offset) {
+    const double polar = radians(polar_deg), azimuth = radians(azimuth_deg);
+    const Vec3 out(std::cos(azimuth), 0, std::sin(azimuth));
+    return Vec3(kCentre + (kRadius + offset) * (std::sin(polar) * out + std::cos(polar) * kUp));
+  };
+  for (int k = 0; k < 12; ++k) {
+    Points3f rail(15, 3);
+    for (int i = 0; i < 15; ++i)
+      rail.row(i) = on_sphere(5 + 35.0 * i / 14, 30.0 * k, kCardOffset).transpose().cast<float>();
+    rails.push_back(rail);
+  }
+  input.input_strands = strand_set_from_polylines(rails);
+  input.input_strands.strand_attributes["group"] = std::vector<int32_t>(12, 0);
+  input.group_type = {GroupType::root_connected};
+  input.group_cluster = {0};
+  constexpr int kRings = 13, kRound = 72;  // polar 2-50 degrees every 4, azimuth every 5
+  input.hair_vertices.resize(kRings * kRound, 3);
+  for (int i = 0; i < kRings; ++i)
+    for (int j = 0; j < kRound; ++j)
+      input.hair_vertices.row(i * kRound + j) =
+          on_sphere(2 + 4.0 * i, 5.0 * j, kCardOffset).transpose().cast<float>();
+  std::vector<int64_t> face_offsets{0};
+  std::vector<int32_t> face_vertices, face_group;
+  for (int i = 0; i + 1 < kRings; ++i)
+    for (int j = 0; j < kRound; ++j) {
+      const int next = (j + 1) % kRound;
+      for (int v :
+           {i * kRound + j, (i + 1) * kRound + j, (i + 1) * kRound + next, i * kRound + next})
+        face_vertices.push_back(v);
+      face_offsets.push_back(static_cast<int64_t>(face_vertices.size()));
+      face_group.push_back(-1);
+    }
+  fan_triangulation_with_groups(face_offsets, face_vertices, face_group, input.hair_triangles,
+                                input.hair_triangle_group);
+  input.hair_triangle_flow.resize(input.hair_triangles.rows(), 3);
+  for (Eigen::Index t = 0; t < input.hair_triangles.rows(); ++t) {
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) centre += point_of(input.hair_vertices, input.hair_triangles(t, k));
+    const Vec3 radial = (centre / 3 - kCentre).normalized();
+    const Vec3 down = (radial * radial.dot(kUp) - kUp).normalized();
+    const Vec3 round = radial.cross(down);
+    const Vec3 flow =
+        std::cos(radians(paint_turn_deg)) * down + std::sin(radians(paint_turn_deg)) * round;
+    input.hair_triangle_flow.row(t) = flow.transpose().cast<float>();
+  }
+  return input;
+}
+
+/// Per strand of at least `step + 1` segments rooted 10-35 degrees from the crown: the
+/// angle (degrees) between its `step`-th segment (1: the first) and `reference` there,
+/// both taken along the sphere's surface.
+std::vector<double> heading_angles_deg(const GrowResult& result, int step,
+                                       const std::function<Vec3(const Vec3&)>& reference) {
+  std::vector<double> angles;
+  const StrandSet& strands = result.strands;
+  for (int64_t s = 0; s < strands.strand_count(); ++s) {
+    const Vec3 root = root_of(strands, s);
+    const double polar_deg =
+        std::acos((root - kCentre).normalized().dot(kUp)) * 180 / std::numbers::pi;
+    if (polar_deg < 10 || polar_deg > 35 || strands.strand_size(s) < step + 2) continue;
+    const Vec3 a = point_of(strands.points, strands.offsets[s] + step - 1);
+    const Vec3 b = point_of(strands.points, strands.offsets[s] + step);
+    const Vec3 radial = (0.5 * (a + b) - kCentre).normalized();
+    Vec3 over = (b - a) - (b - a).dot(radial) * radial;
+    Vec3 ref = reference(0.5 * (a + b));
+    ref -= ref.dot(radial) * radial;
+    angles.push_back(std::acos(std::clamp(over.normalized().dot(ref.normalized()), -1.0, 1.0)) *
+                     180 / std::numbers::pi);
+  }
+  std::sort(angles.begin(), angles.end());
+  return angles;
+}
+
+// Near its root a strand heads the way the paint over it runs (GrowParams::
+// root_heading_paint_h): the field, from rails down the meridians, says down; the paint over
+// them runs 40 degrees round the head. The first step heads along the paint with the check,
+// down the meridian without; by the sixth step (past 0.06 H) the strands follow the field
+// again; paint 80 degrees round (beyond 60) is hair crossing over, and the strands head down.
+TEST(StrandGrowing, NearTheRootAStrandHeadsTheWayThePaintOverItRuns) {
+  auto down = [](const Vec3& p) {
+    const Vec3 radial = (p - kCentre).normalized();
+    return Vec3((radial * radial.dot(kUp) - kUp).normalized());
+  };
+  auto turned = [&](double deg) {
+    return [&, deg](const Vec3& p) {
+      const Vec3 d = down(p), round = (p - kCentre).normalized().cross(d);
+      return Vec3(std::cos(radians(deg)) * d + std::sin(radians(deg)) * round);
+    };
+  };
+  const GrowParams params = params_with(kStrandCount);
+  GrowParams field_alone = params;
+  field_alone.root_heading_paint_h = 0;
+  const GrowInput turned_40 = meridians_under_turned_paint(40);
+  const GrowResult with_paint = grow_strands(turned_40, params);
+  const GrowResult without = grow_strands(turned_40, field_alone);
+  const GrowResult turned_80 = grow_strands(meridians_under_turned_paint(80), params);
+  const auto median = [](const std::vector<double>& v) {
+    return v.empty() ? 1e9 : v[v.size() / 2];
+  };
+  const std::vector<double> first_to_paint = heading_angles_deg(with_paint, 1, turned(40));
+  const std::vector<double> first_without = heading_angles_deg(without, 1, turned(40));
+  const std::vector<double> sixth_to_down = heading_angles_deg(with_paint, 6, down);
+  const std::vector<double> first_80_to_down = heading_angles_deg(turned_80, 1, down);
+  std::printf(
+      "[ grow     ] paint 40 degrees round: first step %.1f degrees off it at the median (%.1f "
+      "without the paint), sixth %.1f off down; paint 80 degrees round: first step %.1f off "
+      "down (%zu, %zu, %zu, %zu strands)\n",
+      median(first_to_paint), median(first_without), median(sixth_to_down),
+      median(first_80_to_down), first_to_paint.size(), first_without.size(), sixth_to_down.size(),
+      first_80_to_down.size());
+  // Beyond the rails' tips (40 degrees), under the paint (to 48), a strand cannot leave its
+  // root: its one step lies along the paint too (stub_direction(), then the paint's way).
+  std::vector<double> stub_to_paint;
+  for (int64_t s = 0; s < with_paint.strands.strand_count(); ++s) {
+    const Vec3 root = root_of(with_paint.strands, s);
+    const double polar_deg =
+        std::acos((root - kCentre).normalized().dot(kUp)) * 180 / std::numbers::pi;
+    if (with_paint.strands.strand_size(s) != 2 || polar_deg < 41 || polar_deg > 48) continue;
+    const Vec3 radial = (root - kCentre).normalized();
+    Vec3 step = last_of(with_paint.strands, s) - root;
+    step -= step.dot(radial) * radial;
+    stub_to_paint.push_back(
+        std::acos(std::clamp(std::abs(step.normalized().dot(turned(40)(root))), -1.0, 1.0)) * 180 /
+        std::numbers::pi);
+  }
+  std::sort(stub_to_paint.begin(), stub_to_paint.end());
+  std::printf("[ grow     ] %zu strands that cannot leave their root: %.1f degrees off the paint\n",
+              stub_to_paint.size(), median(stub_to_paint));
+  ASSERT_GT(stub_to_paint.size(), 10u);
+  EXPECT_LT(median(stub_to_paint), 5);
+  ASSERT_GT(first_to_paint.size(), 50u);
+  ASSERT_GT(sixth_to_down.size(), 50u);
+  EXPECT_LT(median(first_to_paint), 5);
+  EXPECT_GT(median(first_without), 30);
+  EXPECT_LT(median(sixth_to_down), 15);
+  EXPECT_LT(median(first_80_to_down), 15);
 }
 
 TEST(StrandGrowing, SameResultForOneAndTwoThreads) {
