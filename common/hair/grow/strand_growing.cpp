@@ -734,10 +734,10 @@ class StrandGrower {
 
   /// The field's direction `field_direction` at `point`, turned over the scalp onto the
   /// clear paint of the hair face nearest `point` (GrowingContext::painted_flow_near())
-  /// where that runs within kRootPaintMaxAngleDeg of it: the paint's part along the body's
-  /// surface, in the field's sense and as long as the field's, plus the field's own part
-  /// off the surface (root_heading_paint_h). Unchanged where no such paint is near, or the
-  /// paint runs within about 65 degrees of straight off the body.
+  /// where that runs within 60 degrees of it (kRootPaintMinCos): the paint's part along
+  /// the body's surface, in the field's sense and as long as the field's, plus the field's
+  /// own part off the surface (root_heading_paint_h). Unchanged where no such paint is
+  /// near, or the paint runs within about 65 degrees of straight off the body.
   Vec3 heading_along_paint(const Vec3& point, const Vec3& field_direction) const {
     const std::optional<Vec3> flow = context_.painted_flow_near(point);
     if (!flow || std::abs(flow->dot(field_direction)) < kRootPaintMinCos) return field_direction;
