@@ -830,6 +830,32 @@ TEST(StrandGrowing, BridgesGoOnAheadNotBackOrSidewaysToTheNextCard) {
   EXPECT_GT(stacked_start.bridged_back, stacked_start.ending_beyond / 2);
 }
 
+/// Faces without a group over the `rows` x `columns` grid of points in
+/// input.hair_vertices (row-major; with `wrap`, the last column joins the first), as quads
+/// fanned into triangles, each painted with `flow_at(its centre)`.
+void add_painted_grid(GrowInput& input, int rows, int columns, bool wrap,
+                      const std::function<Vec3(const Vec3&)>& flow_at) {
+  std::vector<int64_t> face_offsets{0};
+  std::vector<int32_t> face_vertices, face_group;
+  for (int i = 0; i + 1 < rows; ++i)
+    for (int j = 0; j + 1 < columns || (wrap && j < columns); ++j) {
+      const int next = (j + 1) % columns;
+      for (int v :
+           {i * columns + j, (i + 1) * columns + j, (i + 1) * columns + next, i * columns + next})
+        face_vertices.push_back(v);
+      face_offsets.push_back(static_cast<int64_t>(face_vertices.size()));
+      face_group.push_back(-1);
+    }
+  fan_triangulation_with_groups(face_offsets, face_vertices, face_group, input.hair_triangles,
+                                input.hair_triangle_group);
+  input.hair_triangle_flow.resize(input.hair_triangles.rows(), 3);
+  for (Eigen::Index t = 0; t < input.hair_triangles.rows(); ++t) {
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) centre += point_of(input.hair_vertices, input.hair_triangles(t, k));
+    input.hair_triangle_flow.row(t) = flow_at(centre / 3).transpose().cast<float>();
+  }
+}
+
 /// Three cards down card 0's meridian: a root card (group 0, polar 10-30 degrees, 4 mm
 /// out), a card stacked 6 mm over its end (group 1, 25-45 degrees) and one more beyond a
 /// 5 degree (9 mm) gap (group 2, 50-62 degrees, its tip over the scalp), both middle and
@@ -859,23 +885,9 @@ GrowInput cards_over_painted_gap(bool paint_along) {
     for (int j = 0; j < kAcross; ++j)
       input.hair_vertices.row(i * kAcross + j) =
           card_zero_rail(0.01 * j - 0.015, kCardOffset, 40 + 2.5 * i, 40 + 2.5 * i).row(0);
-  std::vector<int64_t> face_offsets{0};
-  std::vector<int32_t> face_vertices, face_group;
-  for (int i = 0; i + 1 < kAlong; ++i)
-    for (int j = 0; j + 1 < kAcross; ++j) {
-      for (int v :
-           {i * kAcross + j, (i + 1) * kAcross + j, (i + 1) * kAcross + j + 1, i * kAcross + j + 1})
-        face_vertices.push_back(v);
-      face_offsets.push_back(static_cast<int64_t>(face_vertices.size()));
-      face_group.push_back(-1);
-    }
-  fan_triangulation_with_groups(face_offsets, face_vertices, face_group, input.hair_triangles,
-                                input.hair_triangle_group);
-  input.hair_triangle_flow.resize(input.hair_triangles.rows(), 3);
   const Vec3 down_the_gap = frame.out * std::cos(radians(47.5)) - kUp * std::sin(radians(47.5));
   const Vec3 flow = paint_along ? down_the_gap : frame.side;
-  for (Eigen::Index t = 0; t < input.hair_triangles.rows(); ++t)
-    input.hair_triangle_flow.row(t) = flow.transpose().cast<float>();
+  add_painted_grid(input, kAlong, kAcross, false, [&](const Vec3&) { return flow; });
   return input;
 }
 
@@ -1397,30 +1409,12 @@ GrowInput meridians_under_turned_paint(double paint_turn_deg) {
     for (int j = 0; j < kRound; ++j)
       input.hair_vertices.row(i * kRound + j) =
           on_sphere(2 + 4.0 * i, 5.0 * j, kCardOffset).transpose().cast<float>();
-  std::vector<int64_t> face_offsets{0};
-  std::vector<int32_t> face_vertices, face_group;
-  for (int i = 0; i + 1 < kRings; ++i)
-    for (int j = 0; j < kRound; ++j) {
-      const int next = (j + 1) % kRound;
-      for (int v :
-           {i * kRound + j, (i + 1) * kRound + j, (i + 1) * kRound + next, i * kRound + next})
-        face_vertices.push_back(v);
-      face_offsets.push_back(static_cast<int64_t>(face_vertices.size()));
-      face_group.push_back(-1);
-    }
-  fan_triangulation_with_groups(face_offsets, face_vertices, face_group, input.hair_triangles,
-                                input.hair_triangle_group);
-  input.hair_triangle_flow.resize(input.hair_triangles.rows(), 3);
-  for (Eigen::Index t = 0; t < input.hair_triangles.rows(); ++t) {
-    Vec3 centre = Vec3::Zero();
-    for (int k = 0; k < 3; ++k) centre += point_of(input.hair_vertices, input.hair_triangles(t, k));
-    const Vec3 radial = (centre / 3 - kCentre).normalized();
+  add_painted_grid(input, kRings, kRound, true, [&](const Vec3& centre) {
+    const Vec3 radial = (centre - kCentre).normalized();
     const Vec3 down = (radial * radial.dot(kUp) - kUp).normalized();
-    const Vec3 round = radial.cross(down);
-    const Vec3 flow =
-        std::cos(radians(paint_turn_deg)) * down + std::sin(radians(paint_turn_deg)) * round;
-    input.hair_triangle_flow.row(t) = flow.transpose().cast<float>();
-  }
+    return Vec3(std::cos(radians(paint_turn_deg)) * down +
+                std::sin(radians(paint_turn_deg)) * radial.cross(down));
+  });
   return input;
 }
 
