@@ -461,17 +461,16 @@ class GrowingContext {
       // to a card beside it (short01's spikes, stacked at every angle, chained round the
       // crown so). A tail after its band is entered as it turns, above, and a strand
       // hanging off the scalp (a braid's locks, crossing one another) as it lies.
-      if (!into_continuation && params_.bridge_max_angle_deg > 0 &&
-          !hangs_off_scalp_[static_cast<size_t>(entry.strand)] &&
-          !bridge_target(entry, point, direction))
-        continue;
+      const bool checked_bridge =
+          !into_continuation && !hangs_off_scalp_[static_cast<size_t>(entry.strand)];
+      const std::optional<Vec3> target =
+          checked_bridge ? bridge_target(entry, point, direction) : std::nullopt;
+      if (checked_bridge && params_.bridge_max_angle_deg > 0 && !target) continue;
       // Nor from card to card across the paint between them (bridge_paint_max_angle_deg).
       // Out of the field a strand may rise across the hair it leaves into a card stacked
       // on it (a tuft standing on short01's cap, which no other hair reaches), as hair
       // rooted under such a tuft does.
-      if (from_card && !into_continuation && !hangs_off_scalp_[static_cast<size_t>(entry.strand)] &&
-          crosses_paint(point, bridge_target(entry, point, direction).value_or(entry_start(entry))))
-        continue;
+      if (checked_bridge && from_card && crosses_paint(point, target.value_or(start))) continue;
       // Not behind us by more than the radius allows, and not across the gap sideways.
       Vec3 gap = start - point;
       double score = gap.norm() / reach_m + (1 - turn_cos);
