@@ -17,6 +17,7 @@
 #include "hair/grow/followed_card_flow.h"
 #include "hair/grow/grow_io.h"
 #include "hair/grow/grow_measures.h"
+#include "hair/grow/strand_sense.h"
 #include "hair/h5/dataset.h"
 #include "hair/h5/enum_dataset.h"
 #include "hair/h5/schema_validation.h"
@@ -125,8 +126,9 @@ int main(int argc, char** argv) {
         "| model | strands | points | coverage mean / p95 (H) | fidelity mean / p95 (H) | "
         "points inside body | root to scalp mean / max (H) | worst patch: coverage mean (H) | "
         "input along paint | grown along flow | grown along the followed card | clusters: "
-        "strands min / median / max |\n"
-        "|---|---:|---:|---|---|---:|---|---|---:|---:|---:|---|\n");
+        "strands min / median / max | kinked strands (hairpins / air chords) | curvature "
+        "grown / cards (rad/m) |\n"
+        "|---|---:|---:|---|---|---:|---|---|---:|---:|---:|---|---|---|\n");
     return 0;
   }
   try {
@@ -221,15 +223,33 @@ int main(int argc, char** argv) {
                     m.worst_group_coverage_mean_h);
       worst_text = text;
     }
+    // The strands' sense: kinks, and curvature against the cards' (their input strands)
+    // at a common step of 0.01 H.
+    const hair::KinkMeasures kinks = hair::measure_kinks(
+        grown.strands, hair::TriangleMeshDistance(hair_vertices, hair_triangles),
+        grown.head_height_m);
+    const auto strand_share = [&](int64_t count) {
+      return 100.0 * static_cast<double>(count) /
+             static_cast<double>(std::max<int64_t>(1, kinks.strands));
+    };
+    const double curvature_step_m = 0.01 * grown.head_height_m;
+    const double grown_curvature = hair::mean_curvature_per_m(grown.strands, curvature_step_m);
+    const double card_curvature = hair::mean_curvature_per_m(judged.input, curvature_step_m);
+    char sense_text[160];
+    std::snprintf(sense_text, sizeof sense_text,
+                  "%.2f%% (%.2f%% / %.2f%%) | %.1f / %.1f (%.2f)", strand_share(kinks.kinked_strands),
+                  strand_share(kinks.hairpin_strands), strand_share(kinks.air_chord_strands),
+                  grown_curvature, card_curvature,
+                  card_curvature > 0 ? grown_curvature / card_curvature : 0.0);
     std::printf(
         "| %s | %lld | %lld | %.4f / %.4f | %.4f / %.4f | %.2f%% | %.4f / %.4f | %s | %s | %s | %s "
-        "| %s |\n",
+        "| %s | %s |\n",
         label.c_str(), static_cast<long long>(grown.strands.strand_count()),
         static_cast<long long>(grown.strands.point_count()), m.coverage_mean_h, m.coverage_p95_h,
         m.fidelity_mean_h, m.fidelity_p95_h, 100 * m.inside_body_share, m.root_distance_mean_h,
         m.root_distance_max_h, worst_text.c_str(), share_text(input_along, input_judged).c_str(),
         share_text(grown_along, grown_judged).c_str(),
-        share_text(followed_along, followed_judged).c_str(), cluster_text.c_str());
+        share_text(followed_along, followed_judged).c_str(), cluster_text.c_str(), sense_text);
   } catch (const hair::Error& e) {
     std::cerr << "hair-grow-report: error: " << e.what() << "\n";
     return e.exit_code();

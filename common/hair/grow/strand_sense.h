@@ -1,0 +1,63 @@
+#pragma once
+// The sense of grown strands, beyond their axis: strands that turn back on themselves
+// (hairpins), that cut through air where the mesh has no hair (chords), and how much
+// they curl against the cards they were grown from.
+
+#include <cstdint>
+
+#include "hair/core/strand_set.h"
+#include "hair/geom/triangle_mesh_distance.h"
+
+namespace hair {
+
+/// What counts as a kink (docs/grow.md, "Kinks and curls").
+struct KinkLimits {
+  /// A turn between consecutive segments sharper than this is a hairpin: real hair bends
+  /// that sharply only where something folds it, and a card mesh shows no such fold.
+  double hairpin_turn_deg = 90;
+  /// A stretch of strand at least this long, every point of it farther than
+  /// `air_distance_h` from the hair mesh, is a chord through air.
+  double air_chord_length_m = 0.02;
+  /// Farther than this (head heights) from every hair triangle is air: about twice the
+  /// thickness of a card layer stacked on the head (4 to 6 mm), so that hair filling
+  /// the space between two layers is not air.
+  double air_distance_h = 0.04;
+  /// Points are tested this far apart (head heights) along a segment, so that one long
+  /// segment is judged along its whole length, not only at its ends.
+  double air_sample_step_h = 0.01;
+};
+
+/// Kinks of a strand set; shares of strands (0 when there are none).
+struct KinkMeasures {
+  int64_t strands = 0;
+  int64_t hairpin_strands = 0;    ///< with a turn sharper than hairpin_turn_deg
+  int64_t air_chord_strands = 0;  ///< with a chord through air longer than air_chord_length_m
+  int64_t kinked_strands = 0;     ///< with either
+  double kinked_share() const {
+    return strands == 0 ? 0.0 : static_cast<double>(kinked_strands) / static_cast<double>(strands);
+  }
+};
+
+/// Whether the polyline `points` (#n x 3, metres) turns by more than `turn_deg` between two
+/// consecutive segments; segments shorter than 1e-9 m are skipped (a repeated point is
+/// no turn).
+bool has_hairpin(const Points3f& points, double turn_deg);
+
+/// The longest stretch (metres of arc length) of `points` along which every tested point
+/// lies farther than `air_m` from the mesh of `hair_distance`; points are tested at the
+/// vertices and every `step_m` between them.
+double longest_air_stretch_m(const Points3f& points, const TriangleMeshDistance& hair_distance,
+                             double air_m, double step_m);
+
+/// Kinks of every strand of `grown` against the hair mesh (its distance index).
+/// Deterministic; strands run in parallel (OpenMP).
+KinkMeasures measure_kinks(const StrandSet& grown, const TriangleMeshDistance& hair_distance,
+                           double head_height_m, const KinkLimits& limits = {});
+
+/// How much strands curl: the total turning angle over the total length (radians per
+/// metre) of every strand resampled at `step_m` of arc length (strands shorter than
+/// three steps are left out). At a common step the grown strands and the cards' input
+/// strands compare, whatever the meshes' and the grower's point spacings.
+double mean_curvature_per_m(const StrandSet& strands, double step_m);
+
+}  // namespace hair

@@ -1,0 +1,95 @@
+// The sense of strands: hairpins, chords through air and curvature on hand-made strands
+// whose answers are known from geometry (a helix's curvature is r / (r^2 + c^2)).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "hair/grow/strand_sense.h"
+
+namespace {
+
+using hair::Points3f;
+
+Points3f polyline(std::initializer_list<std::array<float, 3>> points) {
+  Points3f p(static_cast<Eigen::Index>(points.size()), 3);
+  Eigen::Index i = 0;
+  for (const auto& q : points) p.row(i++) << q[0], q[1], q[2];
+  return p;
+}
+
+/// A helix of radius r (m) rising c (m) per radian about +Y, `turns` turns, n points a turn.
+Points3f helix(double r, double c, double turns, int n) {
+  const int count = static_cast<int>(turns * n) + 1;
+  Points3f p(count, 3);
+  for (int i = 0; i < count; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    p.row(i) << static_cast<float>(r * std::cos(t)), static_cast<float>(-c * t),
+        static_cast<float>(r * std::sin(t));
+  }
+  return p;
+}
+
+/// A flat card: a 0.2 m square in the plane z = 0, centred on the origin.
+struct FlatCard {
+  Points3f vertices = polyline({{-0.1f, -0.1f, 0}, {0.1f, -0.1f, 0}, {0.1f, 0.1f, 0}, {-0.1f, 0.1f, 0}});
+  hair::Triangles3i triangles = (hair::Triangles3i(2, 3) << 0, 1, 2, 0, 2, 3).finished();
+};
+
+TEST(StrandSense, AStrandThatTurnsBackIsAHairpinAndABendIsNot) {
+  EXPECT_TRUE(hair::has_hairpin(polyline({{0, 0, 0}, {0, -0.01f, 0}, {0.002f, 0, 0}}), 90));
+  // A right angle is not sharper than 90 degrees; 100 degrees is.
+  EXPECT_FALSE(hair::has_hairpin(polyline({{0, 0, 0}, {0, -0.01f, 0}, {0.01f, -0.01f, 0}}), 90));
+  const double a = 100 * std::numbers::pi / 180;
+  EXPECT_TRUE(hair::has_hairpin(
+      polyline({{0, 0, 0},
+                {0, -0.01f, 0},
+                {static_cast<float>(0.01 * std::sin(a)), static_cast<float>(-0.01 - 0.01 * std::cos(a)), 0}}),
+      90));
+  // A repeated point between two segments is no turn, and a tight curl of 5 mm radius
+  // sampled every 36 degrees has no hairpin.
+  EXPECT_FALSE(hair::has_hairpin(polyline({{0, 0, 0}, {0, -0.01f, 0}, {0, -0.01f, 0}, {0, -0.02f, 0}}), 90));
+  EXPECT_FALSE(hair::has_hairpin(helix(0.005, 0.001, 3, 10), 90));
+}
+
+TEST(StrandSense, AStretchFarFromTheMeshIsAChordThroughAir) {
+  const FlatCard card;
+  const hair::TriangleMeshDistance distance(card.vertices, card.triangles);
+  // On the card for 5 cm, then 3 cm straight out of it in one segment: the stretch farther
+  // than 1 cm is the last 2 cm, found within one segment by the samples along it.
+  const Points3f out = polyline({{0, 0.05f, 0}, {0, 0, 0}, {0, 0, 0.03f}});
+  EXPECT_NEAR(hair::longest_air_stretch_m(out, distance, 0.01, 0.0025), 0.02, 0.003);
+  // Lying 5 mm over the card all along: no air at 1 cm.
+  const Points3f over = polyline({{0, 0.05f, 0.005f}, {0, -0.05f, 0.005f}});
+  EXPECT_EQ(hair::longest_air_stretch_m(over, distance, 0.01, 0.0025), 0.0);
+  // A chord off the card's edge and back: 0.3 m beyond x = 0.1, 2 cm high.
+  const Points3f chord = polyline({{0.05f, 0, 0}, {0.15f, 0, 0.02f}, {0.45f, 0, 0.02f}});
+  EXPECT_GT(hair::longest_air_stretch_m(chord, distance, 0.01, 0.0025), 0.29);
+
+  hair::StrandSet strands = hair::strand_set_from_polylines(
+      {out, over, chord, polyline({{0, 0, 0}, {0, -0.01f, 0}, {0.002f, 0, 0}})});
+  const hair::KinkMeasures m = hair::measure_kinks(strands, distance, 0.25);
+  EXPECT_EQ(m.strands, 4);
+  EXPECT_EQ(m.hairpin_strands, 1);
+  EXPECT_EQ(m.air_chord_strands, 1);  // `chord`; `out` is in air for under 2 cm
+  EXPECT_EQ(m.kinked_strands, 2);
+  EXPECT_DOUBLE_EQ(m.kinked_share(), 0.5);
+}
+
+TEST(StrandSense, AHelixCurvesAsItsRadiusAndPitchSay) {
+  // Curvature of a helix: r / (r^2 + c^2), whatever the point spacing of the strand.
+  for (const auto& [r, c] : {std::pair{0.008, 0.002}, std::pair{0.02, 0.005}}) {
+    const double expected = r / (r * r + c * c);
+    for (int n : {12, 40}) {
+      const hair::StrandSet strands = hair::strand_set_from_polylines({helix(r, c, 4, n)});
+      EXPECT_NEAR(hair::mean_curvature_per_m(strands, 0.002), expected, 0.05 * expected)
+          << "r " << r << " c " << c << " n " << n;
+    }
+  }
+  // A straight strand does not curve; strands shorter than three steps are left out.
+  const hair::StrandSet straight = hair::strand_set_from_polylines(
+      {polyline({{0, 0, 0}, {0, -0.3f, 0}}), polyline({{0, 0, 0}, {0.001f, 0, 0}})});
+  EXPECT_NEAR(hair::mean_curvature_per_m(straight, 0.005), 0.0, 1e-3);
+}
+
+}  // namespace
