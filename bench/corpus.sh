@@ -13,7 +13,8 @@
 # (default models/style_extended.yml), REPORT (default docs/measured/corpus.md; the
 # pictures go beside it), ONLY (a regular expression: run only the meshes whose name
 # matches; the report then holds just them), BLENDER (default blender: the mesh
-# pictures; without it the sheets show the grown strands only).
+# pictures; without it the sheets show the grown strands only), KEEP (a folder to keep
+# every mesh's outputs and pictures in, instead of a temporary one).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -29,11 +30,16 @@ threads=${THREADS:-$((jobs > 1 ? 1 : 0))}
 manifest=$corpus/manifest.tsv
 [[ -f "$manifest" ]] || { echo "corpus.sh: $manifest is missing: run scripts/corpus-prepare.sh first" >&2; exit 2; }
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/corpus.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+if [[ -n "${KEEP:-}" ]]; then
+  work=$KEEP && mkdir -p "$work"  # every mesh's outputs and pictures stay there
+else
+  work=$(mktemp -d "${TMPDIR:-/tmp}/corpus.XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
 source bench/common.sh
 copy_binaries corpus "$work" extract typeify cluster-middle cluster-all grow classify hair-grow-report hair-render
 bin=$work/bin
+machine="$(nproc) cores, $(cpu_name)"  # before OMP_NUM_THREADS, which nproc obeys
 export bin params model_file work corpus blender threads
 export OMP_NUM_THREADS=$((threads > 0 ? threads : $(nproc)))
 
@@ -49,11 +55,11 @@ one() {
   fi
   echo $(( ($(date +%s%N) - start) / 1000000 )) >"$dir/ms.txt"
   "$bin/hair-grow-report" "$dir/extract.h5" "$dir/strands.h5" --name "$name" >"$dir/row.txt"
-  "$bin/hair-render" "$dir/strands.h5" --extract "$dir/extract.h5" --size 200 \
+  "$bin/hair-render" "$dir/strands.h5" --extract "$dir/extract.h5" --size 160 \
     --title "$name: grown strands by cluster" -o "$dir/strands.png"
   if command -v "$blender" >/dev/null; then
     "$blender" --background --factory-startup --python scripts/corpus/blender_mesh_views.py -- \
-      "$mesh" "$body" "$dir/mesh.png" --size 200 >/dev/null 2>"$dir/blender.txt" || true
+      "$mesh" "$body" "$dir/mesh.png" --size 160 >/dev/null 2>"$dir/blender.txt" || true
   fi
   echo "corpus: $name done" >&2
 }
@@ -66,6 +72,6 @@ echo "$names" | xargs -P "$jobs" -I{} bash -c 'one "$@"' _ {}
 
 mkdir -p "$(dirname "$report")"
 /usr/bin/python3 bench/corpus_report.py "$manifest" "$work" "$report" \
-  --command "bench/corpus.sh -j $jobs $corpus" --machine "$(nproc) cores, $(cpu_name)" \
+  --command "bench/corpus.sh -j $jobs $corpus" --machine "$machine" \
   --commit "$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- common stages tools pipelines models || echo '+changes')"
 echo "corpus: wrote $report" >&2

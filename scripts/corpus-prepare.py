@@ -98,7 +98,8 @@ def prepare(entry, out, args):
     if method == "blender":
         source = os.path.join(work, os.path.basename(entry["path"]))
         get_file(entry["repo"], entry["commit"], entry["path"], source, args.mirror)
-        command = [source, folder, name, "--hair", entry["hair"], "--yaw-deg", entry["yaw_deg"] or "0"]
+        command = [source, folder, name, "--hair", entry["hair"], "--yaw-deg", entry["yaw_deg"] or "0",
+                   "--scale", entry["scale"] or "10"]
         if entry["body"]:
             command += ["--body", entry["body"]]
         for path in filter(None, entry["body_files"].split(";")):
@@ -183,8 +184,8 @@ def main():
     with open(tmp, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=columns, delimiter="\t", lineterminator="\n")
         writer.writeheader()
-        for e in entries:
-            if e["name"] in prepared:
+        for e in entries:  # this run's, and those an earlier run prepared
+            if os.path.isfile(os.path.join(args.out, e["name"], "hair", e["name"] + ".obj")):
                 writer.writerow(e)
     os.replace(tmp, os.path.join(args.out, "manifest.tsv"))
     print(f"corpus-prepare: {len(prepared)} of {len(wanted)} meshes in {args.out}", file=sys.stderr)

@@ -43,9 +43,11 @@ def main():
     sheet = numpy.concatenate(rows[::-1], axis=0)  # first row at the top
     image = bpy.data.images.new("sheet", width=sheet.shape[1], height=sheet.shape[0], alpha=True)
     image.pixels.foreach_set(sheet.ravel())
-    image.filepath_raw = out_path + ".part.png"
-    image.file_format = "PNG"
-    image.save()
+    # 8-bit RGB, as compressed as PNG goes: a sheet of 20 rows stays near 1 MB.
+    settings = bpy.context.scene.render.image_settings
+    settings.file_format, settings.color_mode, settings.color_depth = "PNG", "RGB", "8"
+    settings.compression = 100
+    image.save_render(out_path + ".part.png", scene=bpy.context.scene)
     os.replace(out_path + ".part.png", out_path)
 
 

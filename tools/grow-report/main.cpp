@@ -225,8 +225,9 @@ int main(int argc, char** argv) {
     }
     // The strands' sense: kinks, and curvature against the cards' (their input strands)
     // at a common step of 0.01 H.
+    const hair::TriangleMeshDistance body_distance(body.vertices, body.triangles);
     const hair::KinkMeasures kinks = hair::measure_kinks(
-        grown.strands, hair::TriangleMeshDistance(hair_vertices, hair_triangles),
+        grown.strands, hair::TriangleMeshDistance(hair_vertices, hair_triangles), &body_distance,
         grown.head_height_m);
     const auto strand_share = [&](int64_t count) {
       return 100.0 * static_cast<double>(count) /

@@ -48,16 +48,27 @@ bool has_hairpin(const Points3f& points, double turn_deg) {
   return false;
 }
 
-double longest_air_stretch_m(const Points3f& points, const TriangleMeshDistance& hair_distance,
-                             double air_m, double step_m) {
+bool AirAroundHair::is_air(const Eigen::Vector3d& point) const {
+  if (hair_.is_within(point, air_m_)) return false;
+  if (body_ == nullptr) return true;
+  const TriangleMeshDistance::Nearest nearest = body_->nearest(point);
+  const Eigen::Vector3d out = point - nearest.closest_point;
+  if (out.norm() < kNoLengthM) return true;
+  const Eigen::Vector3d direction = out.normalized();
+  for (double along = air_m_; along <= reach_m_; along += air_m_)
+    if (hair_.is_within(point + along * direction, air_m_)) return false;
+  return true;
+}
+
+double longest_air_stretch_m(const Points3f& points, const AirAroundHair& air, double step_m) {
   double longest = 0, stretch = 0;
   bool in_air = false;
   Eigen::Vector3d last = Eigen::Vector3d::Zero();
   const auto visit = [&](const Eigen::Vector3d& p) {
-    const bool air = !hair_distance.is_within(p, air_m);
-    if (air && in_air) stretch += (p - last).norm();
-    if (!air) stretch = 0;
-    in_air = air;
+    const bool is_air = air.is_air(p);
+    if (is_air && in_air) stretch += (p - last).norm();
+    if (!is_air) stretch = 0;
+    in_air = is_air;
     last = p;
     longest = std::max(longest, stretch);
   };
@@ -74,17 +85,19 @@ double longest_air_stretch_m(const Points3f& points, const TriangleMeshDistance&
 }
 
 KinkMeasures measure_kinks(const StrandSet& grown, const TriangleMeshDistance& hair_distance,
-                           double head_height_m, const KinkLimits& limits) {
+                           const TriangleMeshDistance* body_distance, double head_height_m,
+                           const KinkLimits& limits) {
   const int64_t n = grown.strand_count();
   std::vector<uint8_t> hairpin(static_cast<size_t>(n), 0), chord(static_cast<size_t>(n), 0);
-  const double air_m = limits.air_distance_h * head_height_m;
+  const AirAroundHair air(hair_distance, body_distance, limits.air_distance_h * head_height_m,
+                          limits.covered_reach_h * head_height_m);
   const double step_m = limits.air_sample_step_h * head_height_m;
 #pragma omp parallel for schedule(dynamic, 64)
   for (int64_t s = 0; s < n; ++s) {
     const Points3f points = grown.strand(s);
     hairpin[static_cast<size_t>(s)] = has_hairpin(points, limits.hairpin_turn_deg);
     chord[static_cast<size_t>(s)] =
-        longest_air_stretch_m(points, hair_distance, air_m, step_m) > limits.air_chord_length_m;
+        longest_air_stretch_m(points, air, step_m) > limits.air_chord_length_m;
   }
   KinkMeasures m;
   m.strands = n;

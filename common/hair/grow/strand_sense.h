@@ -25,6 +25,11 @@ struct KinkLimits {
   /// Points are tested this far apart (head heights) along a segment, so that one long
   /// segment is judged along its whole length, not only at its ends.
   double air_sample_step_h = 0.01;
+  /// A point far from the hair mesh is still in the hair where hair lies over it: within
+  /// this distance (head heights) straight out from the body (from the body's nearest
+  /// point through the point). Hair filling a shell mesh, or lying under a card layer,
+  /// is not air; a chord above the hair, or beside it, is.
+  double covered_reach_h = 0.5;
 };
 
 /// Kinks of a strand set; shares of strands (0 when there are none).
@@ -43,16 +48,32 @@ struct KinkMeasures {
 /// no turn).
 bool has_hairpin(const Points3f& points, double turn_deg);
 
-/// The longest stretch (metres of arc length) of `points` along which every tested point
-/// lies farther than `air_m` from the mesh of `hair_distance`; points are tested at the
-/// vertices and every `step_m` between them.
-double longest_air_stretch_m(const Points3f& points, const TriangleMeshDistance& hair_distance,
-                             double air_m, double step_m);
+/// Where the air is around a hair mesh on a body: farther than `air_m` from every hair
+/// triangle, and no hair triangle within `air_m` of the way straight out from the body
+/// through the point, up to `reach_m` (tested every `air_m`). Without a body, every
+/// point far from the hair is air.
+class AirAroundHair {
+ public:
+  AirAroundHair(const TriangleMeshDistance& hair, const TriangleMeshDistance* body, double air_m,
+                double reach_m)
+      : hair_(hair), body_(body), air_m_(air_m), reach_m_(reach_m) {}
+  bool is_air(const Eigen::Vector3d& point) const;
 
-/// Kinks of every strand of `grown` against the hair mesh (its distance index).
-/// Deterministic; strands run in parallel (OpenMP).
+ private:
+  const TriangleMeshDistance& hair_;
+  const TriangleMeshDistance* body_;
+  double air_m_, reach_m_;
+};
+
+/// The longest stretch (metres of arc length) of `points` along which every tested point
+/// is air; points are tested at the vertices and every `step_m` between them.
+double longest_air_stretch_m(const Points3f& points, const AirAroundHair& air, double step_m);
+
+/// Kinks of every strand of `grown` against the hair mesh and the body (their distance
+/// indices; the body may be null). Deterministic; strands run in parallel (OpenMP).
 KinkMeasures measure_kinks(const StrandSet& grown, const TriangleMeshDistance& hair_distance,
-                           double head_height_m, const KinkLimits& limits = {});
+                           const TriangleMeshDistance* body_distance, double head_height_m,
+                           const KinkLimits& limits = {});
 
 /// How much strands curl: the total turning angle over the total length (radians per
 /// metre) of every strand resampled at `step_m` of arc length (strands shorter than

@@ -55,25 +55,48 @@ TEST(StrandSense, AStrandThatTurnsBackIsAHairpinAndABendIsNot) {
 TEST(StrandSense, AStretchFarFromTheMeshIsAChordThroughAir) {
   const FlatCard card;
   const hair::TriangleMeshDistance distance(card.vertices, card.triangles);
+  const hair::AirAroundHair air(distance, nullptr, 0.01, 0.1);
   // On the card for 5 cm, then 3 cm straight out of it in one segment: the stretch farther
   // than 1 cm is the last 2 cm, found within one segment by the samples along it.
   const Points3f out = polyline({{0, 0.05f, 0}, {0, 0, 0}, {0, 0, 0.03f}});
-  EXPECT_NEAR(hair::longest_air_stretch_m(out, distance, 0.01, 0.0025), 0.02, 0.003);
+  EXPECT_NEAR(hair::longest_air_stretch_m(out, air, 0.0025), 0.02, 0.003);
   // Lying 5 mm over the card all along: no air at 1 cm.
   const Points3f over = polyline({{0, 0.05f, 0.005f}, {0, -0.05f, 0.005f}});
-  EXPECT_EQ(hair::longest_air_stretch_m(over, distance, 0.01, 0.0025), 0.0);
+  EXPECT_EQ(hair::longest_air_stretch_m(over, air, 0.0025), 0.0);
   // A chord off the card's edge and back: 0.3 m beyond x = 0.1, 2 cm high.
   const Points3f chord = polyline({{0.05f, 0, 0}, {0.15f, 0, 0.02f}, {0.45f, 0, 0.02f}});
-  EXPECT_GT(hair::longest_air_stretch_m(chord, distance, 0.01, 0.0025), 0.29);
+  EXPECT_GT(hair::longest_air_stretch_m(chord, air, 0.0025), 0.29);
 
   hair::StrandSet strands = hair::strand_set_from_polylines(
       {out, over, chord, polyline({{0, 0, 0}, {0, -0.01f, 0}, {0.002f, 0, 0}})});
-  const hair::KinkMeasures m = hair::measure_kinks(strands, distance, 0.25);
+  const hair::KinkMeasures m = hair::measure_kinks(strands, distance, nullptr, 0.25);
   EXPECT_EQ(m.strands, 4);
   EXPECT_EQ(m.hairpin_strands, 1);
   EXPECT_EQ(m.air_chord_strands, 1);  // `chord`; `out` is in air for under 2 cm
   EXPECT_EQ(m.kinked_strands, 2);
   EXPECT_DOUBLE_EQ(m.kinked_share(), 0.5);
+}
+
+TEST(StrandSense, HairUnderACardLayerIsNotAir) {
+  // A body: a 0.2 m square at z = -0.05; the card layer 5 cm over it at z = 0. A strand
+  // 2.5 cm under the layer runs 2 cm or more from both, but the layer lies over it: not
+  // air. The same strand 3 cm above the layer has nothing over it: air.
+  const FlatCard card;
+  Points3f body_vertices = card.vertices;
+  body_vertices.col(2).setConstant(-0.05f);
+  const hair::TriangleMeshDistance hair_distance(card.vertices, card.triangles);
+  const hair::TriangleMeshDistance body_distance(body_vertices, card.triangles);
+  const hair::AirAroundHair air(hair_distance, &body_distance, 0.01, 0.1);
+  const Points3f under = polyline({{0, 0.05f, -0.025f}, {0, -0.05f, -0.025f}});
+  const Points3f above = polyline({{0, 0.05f, 0.03f}, {0, -0.05f, 0.03f}});
+  EXPECT_EQ(hair::longest_air_stretch_m(under, air, 0.0025), 0.0);
+  EXPECT_NEAR(hair::longest_air_stretch_m(above, air, 0.0025), 0.1, 1e-6);
+  // Without the body, far from the card is air wherever it is.
+  EXPECT_NEAR(hair::longest_air_stretch_m(under, hair::AirAroundHair(hair_distance, nullptr, 0.01, 0.1), 0.0025),
+              0.1, 1e-6);
+  const hair::KinkMeasures m = hair::measure_kinks(hair::strand_set_from_polylines({under, above}),
+                                                   hair_distance, &body_distance, 0.25);
+  EXPECT_EQ(m.air_chord_strands, 1);
 }
 
 TEST(StrandSense, AHelixCurvesAsItsRadiusAndPitchSay) {
