@@ -39,6 +39,10 @@ fi
 source bench/common.sh
 copy_binaries corpus "$work" extract typeify cluster-middle cluster-all grow classify hair-grow-report hair-render
 bin=$work/bin
+# The parameters and the model as they are now, so that an edit while the bench runs
+# does not reach half of the meshes.
+rm -rf "$work/params" && cp -r "$params" "$work/params" && params=$work/params
+cp "$model_file" "$work/model.yml" && model_file=$work/model.yml
 machine="$(nproc) cores, $(cpu_name)"  # before OMP_NUM_THREADS, which nproc obeys
 export bin params model_file work corpus blender threads
 export OMP_NUM_THREADS=$((threads > 0 ? threads : $(nproc)))
@@ -49,8 +53,9 @@ one() {
   mkdir -p "$dir"
   local start=$(date +%s%N)
   if ! ( pipeline_to_styles "$mesh" "$body" "$dir" ) 2>"$dir/error.txt"; then
-    echo "failed: $(tail -n 1 "$dir/error.txt")" >"$dir/row.txt"
-    echo "corpus: $name failed: $(tail -n 1 "$dir/error.txt")" >&2
+    local first=$(grep -m 1 'error' "$dir/error.txt" || tail -n 1 "$dir/error.txt")
+    echo "failed: $first" >"$dir/row.txt"
+    echo "corpus: $name failed: $first" >&2
     return 0
   fi
   echo $(( ($(date +%s%N) - start) / 1000000 )) >"$dir/ms.txt"

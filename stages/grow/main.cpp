@@ -54,6 +54,10 @@ int main(int argc, char** argv) {
         "the field phase ends at this many times the remaining length of the input strand "
         "nearest the root",
         hair::ParamRange::above(0));
+  p.add("field_max_turn_deg", params.field_max_turn_deg,
+        "the field phase ends where the field turns a strand by more than this in one step "
+        "(180: never)",
+        hair::ParamRange::closed(0, 180));
   p.add("continue_radius_h", params.continue_radius_h,
         "at an input strand's end, the next one must start within this distance, in H",
         hair::ParamRange::above(0));

@@ -602,6 +602,7 @@ class StrandGrower {
         keep_m_(params_.follow_keep_h * context.input().head_height_m),
         card_keep_m_(params_.follow_card_keep_h * context.input().head_height_m),
         root_heading_m_(params_.root_heading_paint_h * context.input().head_height_m),
+        field_min_turn_cos_(std::cos(params_.field_max_turn_deg * std::numbers::pi / 180) - 1e-9),
         cluster_(root_cluster) {}
 
   /// The strand from `root`; `reference_row` is the input-strand point nearest it.
@@ -683,6 +684,7 @@ class StrandGrower {
       std::optional<Vec3> d2 = field_->direction(point + 0.5 * step_m_ * *d1);
       if (!d2) break;
       if (length_m + 0.5 * step_m_ < root_heading_m_) d2 = heading_along_paint(point, *d2);
+      if (length_m > 0 && d2->dot(direction_) < field_min_turn_cos_) break;
       Vec3 next = point + step_m_ * *d2;
       if (context_.layered() && ++steps_since_layer == kLayerEvery) {
         layer_step = towards_layer(next, reference_row, length_m + step_m_, cursor, climb_per_m) /
@@ -915,6 +917,7 @@ class StrandGrower {
   const BodySdf& body_;
   const int32_t root_cluster_;
   const double step_m_, clearance_m_, lost_m_, keep_m_, card_keep_m_, root_heading_m_;
+  const double field_min_turn_cos_;  ///< a field step turning more than field_max_turn_deg ends
   GrowingStrand strand_;
   Vec3 direction_ = Vec3::Zero();  ///< of the last step
   std::vector<int32_t> visited_;   ///< groups followed or entered

@@ -57,6 +57,12 @@ struct GrowParams {
   /// The field phase ends once a strand is this many times as long as what remains of the
   /// input strand nearest its root (from that strand's nearest point to its tip).
   double length_factor = 1.0;
+  /// The field phase also ends where the field turns the strand by more than this in one
+  /// step: hair does not fold back on itself where nothing folds it, and such a turn is a
+  /// field whose sense flips between oppositely read input strands (a braid's crossing
+  /// pieces, cards read from either end). The input strands take over there, as where the
+  /// field ends early. 180 switches it off.
+  double field_max_turn_deg = 90;
   /// At the end of an input strand, the next one must begin (or end, read backwards)
   /// within this distance...
   double continue_radius_h = 0.08;
