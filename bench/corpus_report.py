@@ -185,9 +185,12 @@ def main():
         with open(listing, "w") as f:
             f.write("\n".join(cells) + "\n")
         blender = os.environ.get("BLENDER", "blender")
-        done = subprocess.run([blender, "--background", "--factory-startup", "--python",
-                               "scripts/corpus/blender_contact_sheet.py", "--", listing,
-                               os.path.join(folder, sheet)], capture_output=True, text=True)
+        try:
+            done = subprocess.run([blender, "--background", "--factory-startup", "--python",
+                                   "scripts/corpus/blender_contact_sheet.py", "--", listing,
+                                   os.path.join(folder, sheet)], capture_output=True, text=True)
+        except OSError as e:  # no Blender
+            done = subprocess.CompletedProcess([], 1, "", f"{blender}: {e.strerror}")
         if done.returncode == 0:
             out += [f"Each row: the mesh with its texture (front, side, back; Cycles) and the grown "
                     f"strands coloured by cluster.", "", f"![{half} half]({sheet})", ""]

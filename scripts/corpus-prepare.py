@@ -17,9 +17,10 @@ Methods (the manifest's `method` column):
   blender    a character file (glTF/GLB/VRM, FBX) split into hair and body by
              scripts/corpus/blender_split.py in Debian's Blender (`hair`, `body` and
              `body_files` columns)
-  mhclo      a MakeHuman asset (path: the stem of its .obj, .mhclo, .mhmat) placed on
-             ../shared's MakeHuman body by scripts/corpus/fit_mhclo.py, with the
-             texture its .mhmat names
+  mhclo      a MakeHuman asset (path: its .mhclo, which names the .obj and .mhmat, or
+             the stem of the three) placed on ../shared's MakeHuman body by
+             scripts/corpus/fit_mhclo.py, with the texture its .mhmat names or the
+             manifest's `texture` (a file beside the asset; `-`: none)
   remesh:V   one of ../shared's MakeHuman meshes re-meshed by scripts/corpus/remesh_obj.py
 
 The halves: within each source, the meshes sorted by the SHA-256 of their names go
@@ -39,6 +40,12 @@ import urllib.request
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+
+
+# The hm08 base mesh with its helper geometry (CC0, MakeHuman): community hairs are fitted
+# to its hair helper, whose vertices follow the body's 13,380 (../shared's body.obj is the
+# base mesh's body: the same first 13,380 vertices).
+HM08_BASE = ("48s97j7ht5-ux/Game-Live-v2", "d8ca07b272fb9decd6057696bf415a400d284290", "models/base.obj")
 
 
 class Unavailable(Exception):
@@ -88,6 +95,16 @@ def mhmat_texture(path):
     return None
 
 
+def mhclo_names(path):
+    """The obj_file and material lines of a MakeHuman .mhclo file."""
+    named = {}
+    for line in open(path, errors="replace"):
+        w = line.split(None, 1)
+        if len(w) == 2 and w[0] in ("obj_file", "material"):
+            named.setdefault(w[0], w[1].strip())
+    return named
+
+
 def prepare(entry, out, args):
     name = entry["name"]
     folder = os.path.join(out, name)
@@ -108,22 +125,43 @@ def prepare(entry, out, args):
             command += ["--body-file", local]
         blender("blender_split.py", *command)
     elif method == "mhclo":
-        stem = entry["path"]
-        files = {}
-        for ext in ("obj", "mhclo", "mhmat"):
-            files[ext] = os.path.join(work, os.path.basename(stem) + "." + ext)
-            get_file(entry["repo"], entry["commit"], f"{stem}.{ext}", files[ext], args.mirror)
-        texture = mhmat_texture(files["mhmat"])
+        # path: the asset's .mhclo, which names its .obj and .mhmat; or the stem the three
+        # share.
+        if entry["path"].endswith(".mhclo"):
+            folder_path = os.path.dirname(entry["path"])
+            files = {"mhclo": os.path.join(work, os.path.basename(entry["path"]))}
+            get_file(entry["repo"], entry["commit"], entry["path"], files["mhclo"], args.mirror)
+            named = mhclo_names(files["mhclo"])
+            for ext, key in (("obj", "obj_file"), ("mhmat", "material")):
+                if ext == "mhmat" and entry.get("texture"):
+                    continue
+                if key not in named:
+                    raise Unavailable(f"{entry['path']}: no {key} line")
+                files[ext] = os.path.join(work, os.path.basename(named[key]))
+                get_file(entry["repo"], entry["commit"], f"{folder_path}/{named[key]}", files[ext],
+                         args.mirror)
+        else:
+            stem = entry["path"]
+            folder_path = os.path.dirname(stem)
+            files = {}
+            for ext in ("obj", "mhclo") + (() if entry.get("texture") else ("mhmat",)):
+                files[ext] = os.path.join(work, os.path.basename(stem) + "." + ext)
+                get_file(entry["repo"], entry["commit"], f"{stem}.{ext}", files[ext], args.mirror)
+        # The texture the .mhmat names, or the manifest's `texture` where the repository
+        # holds the painted image under another name (or only there: no .mhmat texture).
+        texture = entry.get("texture") or mhmat_texture(files["mhmat"])
         mtl = os.path.join(folder, "hair", name + ".mtl")
         with open(mtl, "w") as f:
             f.write(f"newmtl {name}\n")
-            if texture:
+            if texture and texture != "-":
                 local = os.path.join(folder, "hair", "textures", name + os.path.splitext(texture)[1])
-                get_file(entry["repo"], entry["commit"], f"{os.path.dirname(stem)}/{texture}", local, args.mirror)
+                get_file(entry["repo"], entry["commit"], f"{folder_path}/{texture}", local, args.mirror)
                 f.write(f"map_Kd textures/{os.path.basename(local)}\n")
         body = os.path.join(args.shared, "data", "makehuman", "body.obj")
-        run([sys.executable, os.path.join(HERE, "corpus", "fit_mhclo.py"), files["mhclo"], files["obj"], body,
-             os.path.join(folder, "hair", name + ".obj"), "--mtllib", name + ".mtl"])
+        base = os.path.join(work, "base.obj")
+        get_file(*HM08_BASE, base, args.mirror)
+        run([sys.executable, os.path.join(HERE, "corpus", "fit_mhclo.py"), files["mhclo"], files["obj"], base,
+             os.path.join(folder, "hair", name + ".obj"), "--mtllib", name + ".mtl", "--usemtl", name])
         shutil.copy(body, os.path.join(folder, "body.obj"))
     elif method.startswith("remesh:"):
         makehuman = os.path.join(args.shared, "data", "makehuman")

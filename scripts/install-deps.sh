@@ -18,6 +18,7 @@ packages=(
   libeigen3-dev libassimp-dev libhdf5-dev libcli11-dev libspdlog-dev libfmt-dev
   libnanoflann-dev nlohmann-json3-dev libssl-dev libspectra-dev
   libsuitesparse-dev liblapack-dev zlib1g-dev libtomlplusplus-dev
+  libboost-graph-dev  # Edmonds' matching: triangles paired back into quads
   libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-ml-dev
   libopencv-videoio-dev  # preview videos: MP4 through FFmpeg (libavcodec)
   # tests

@@ -5,11 +5,14 @@ body's proportions, as the asset's .mhclo file says (MakeHuman's clothes fitting
 other line of the OBJ (texture coordinates, faces, materials) is kept as it is, so the
 vertex order and the faces are the artist's.
 
-    fit_mhclo.py ASSET.mhclo ASSET.obj BODY.obj OUT.obj [--mtllib NAME]
+    fit_mhclo.py ASSET.mhclo ASSET.obj BODY.obj OUT.obj [--mtllib NAME] [--usemtl NAME]
 
-BODY.obj: the hm08 base mesh's body, whose vertices are numbered as the base mesh's
-(data/makehuman/body.obj in ../shared). --mtllib replaces the OBJ's mtllib line (or adds
-one). Exits 2 with one line on a file it cannot use.
+BODY.obj: the hm08 base mesh, whose vertices are numbered as the base mesh's: its body
+alone (data/makehuman/body.obj in ../shared, the base mesh's first 13,380 vertices) for
+assets fitted to the body, or the whole base mesh with its helpers (base.obj) for assets
+fitted to the hair helper. --mtllib replaces the OBJ's mtllib line (or adds
+one); --usemtl puts every face under that material (MakeHuman's OBJs name none: their
+material is the .mhclo's .mhmat). Exits 2 with one line on a file it cannot use.
 """
 import argparse
 import os
@@ -27,13 +30,17 @@ def obj_vertices(path):
 
 
 def read_mhclo(path):
-    scales, refs, reading = {}, [], False
+    scales, shears, refs, reading = {}, {}, [], False
     for number, line in enumerate(open(path, errors="replace"), 1):
         words = line.split()
         if not words or words[0].startswith("#"):
             continue
         if words[0] in ("x_scale", "y_scale", "z_scale"):
             scales[words[0][0]] = (int(words[1]), int(words[2]), float(words[3]))
+        elif words[0] in ("l_shear_x", "l_shear_y", "l_shear_z"):
+            # MakeClothes 1's form: the two base vertices and their coordinates on the
+            # base mesh along that axis; the factor is the same ratio as x_scale's.
+            shears[words[0][-1]] = (int(words[1]), int(words[2]), abs(float(words[3]) - float(words[4])))
         elif words[0] == "verts":
             reading = True
         elif reading and words[0][0].isdigit():
@@ -46,8 +53,11 @@ def read_mhclo(path):
                 fail(f"{path}:{number}: a vertex line needs 1 or 9 numbers")
         elif reading:
             reading = False
+    for axis in "xyz":
+        if axis not in scales and axis in shears:
+            scales[axis] = shears[axis]
     if set(scales) != {"x", "y", "z"}:
-        fail(f"{path}: x_scale, y_scale and z_scale are required")
+        fail(f"{path}: x_scale, y_scale and z_scale (or l_shear_x, _y, _z) are required")
     return scales, refs
 
 
@@ -58,6 +68,7 @@ def main():
     parser.add_argument("body")
     parser.add_argument("out")
     parser.add_argument("--mtllib")
+    parser.add_argument("--usemtl")
     args = parser.parse_args()
     for path in (args.mhclo, args.obj, args.body):
         if not os.path.isfile(path):
@@ -77,13 +88,18 @@ def main():
     for (ids, weights, offset) in refs:
         fitted.append(tuple(sum(w * body[i][k] for i, w in zip(ids, weights)) + offset[k] * scale[k]
                             for k in range(3)))
-    out, k, wrote_mtllib = [], 0, False
+    out, k, wrote_mtllib, wrote_usemtl = [], 0, False, False
     for line in open(args.obj, errors="replace"):
         if line.startswith("v "):
             out.append("v %.6f %.6f %.6f\n" % fitted[k])
             k += 1
         elif line.startswith("vn "):
             continue  # normals of the unfitted mesh; extract computes its own
+        elif line.startswith("usemtl") and args.usemtl:
+            continue  # one material for the whole asset, written before its first face
+        elif line.startswith("f ") and args.usemtl and not wrote_usemtl:
+            out += [f"usemtl {args.usemtl}\n", line]
+            wrote_usemtl = True
         elif line.startswith("mtllib") and args.mtllib:
             out.append(f"mtllib {args.mtllib}\n")
             wrote_mtllib = True

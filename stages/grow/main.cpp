@@ -54,9 +54,9 @@ int main(int argc, char** argv) {
         "the field phase ends at this many times the remaining length of the input strand "
         "nearest the root",
         hair::ParamRange::above(0));
-  p.add("field_max_turn_deg", params.field_max_turn_deg,
-        "the field phase ends where the field turns a strand by more than this in one step "
-        "(180: never)",
+  p.add("max_turn_deg", params.max_turn_deg,
+        "no step turns a strand by more than this from its last: along the field the cards "
+        "take over there, along a card or a bridge the strand ends (180: never)",
         hair::ParamRange::closed(0, 180));
   p.add("continue_radius_h", params.continue_radius_h,
         "at an input strand's end, the next one must start within this distance, in H",
@@ -140,13 +140,14 @@ int main(int argc, char** argv) {
     spdlog::info(
         "{}: {} strands, {} points, {} pushed out of the body, {} continuations ({} "
         "into another cluster); {} strands joined the cards feeding a continued cluster; {} "
-        "ended where the card they followed dives into the body; roots from {} (root-type "
+        "ended where the card they followed dives into the body, {} where the next step would "
+        "fold them back; roots from {} (root-type "
         "strands cover {:.0f}% of the scalp under the hair)",
         extract_path, result.strands.strand_count(), result.strands.point_count(),
         result.points_pushed_out,
         result.continuations_same_cluster + result.continuations_other_cluster,
         result.continuations_other_cluster, result.strands_joining_continued_flow,
-        result.strands_ended_at_body,
+        result.strands_ended_at_body, result.strands_ended_at_fold,
         result.roots_from_any_type ? "strands of any type" : "root-type strands",
         100 * result.typed_root_scalp_share);
 

@@ -353,17 +353,19 @@ class GrowingContext {
 
   /// Where a bridge from `here`, going `direction`, into the input strand of `entry` goes:
   /// its first point, read its way and short of its end, no farther than its start, that
-  /// lies within a step of `here` or ahead within bridge_max_angle_deg of `direction`;
-  /// std::nullopt where none does (or bridge_max_angle_deg is 0).
+  /// lies within a step of `here` or ahead within `max_angle_deg` (default
+  /// bridge_max_angle_deg) of `direction`; std::nullopt where none does (or the angle is 0).
   std::optional<Vec3> bridge_target(const StrandEntry& entry, const Vec3& here,
-                                    const Vec3& direction) const {
-    if (!(params_.bridge_max_angle_deg > 0) || direction.squaredNorm() == 0) return std::nullopt;
+                                    const Vec3& direction,
+                                    std::optional<double> max_angle_deg = std::nullopt) const {
+    const double angle_deg = max_angle_deg.value_or(params_.bridge_max_angle_deg);
+    if (!(angle_deg > 0) || direction.squaredNorm() == 0) return std::nullopt;
     const StrandSet& strands = input_.input_strands;
     const int64_t first = strands.offsets[entry.strand],
                   last = strands.offsets[entry.strand + 1] - 1;
     const double step_m = params_.step_h * h_;
     const double start_gap_m = (entry_start(entry) - here).norm();
-    const double min_cos = std::cos(params_.bridge_max_angle_deg * std::numbers::pi / 180);
+    const double min_cos = std::cos(angle_deg * std::numbers::pi / 180);
     for (int64_t k = 0; k < last - first; ++k) {
       const Vec3 p = point_of(strands.points, entry.backward ? last - k : first + k);
       const Vec3 gap = p - here;
@@ -581,6 +583,7 @@ struct GrowingStrand {
   int64_t continued_same = 0, continued_other = 0;
   int64_t joined = 0;  ///< times it joined the cards feeding a continuation (joined_feeder())
   bool ended_at_body = false;  ///< its last steps tried ran into the body (kBlockedAdvance)
+  bool ended_at_fold = false;  ///< its next step, off the field, would have folded it back
   int blocked_steps = 0;       ///< steps in a row that hardly advanced
 };
 
@@ -602,7 +605,10 @@ class StrandGrower {
         keep_m_(params_.follow_keep_h * context.input().head_height_m),
         card_keep_m_(params_.follow_card_keep_h * context.input().head_height_m),
         root_heading_m_(params_.root_heading_paint_h * context.input().head_height_m),
-        field_min_turn_cos_(std::cos(params_.field_max_turn_deg * std::numbers::pi / 180) - 1e-9),
+        min_turn_cos_(std::cos(params_.max_turn_deg * std::numbers::pi / 180) - 1e-9),
+        min_gathered_turn_cos_(
+            std::min(min_turn_cos_,
+                     std::cos(params_.continued_root_max_angle_deg * std::numbers::pi / 180))),
         cluster_(root_cluster) {}
 
   /// The strand from `root`; `reference_row` is the input-strand point nearest it.
@@ -610,7 +616,7 @@ class StrandGrower {
     add_point(root, GrowRule::root, root_cluster_, -1);
     const bool left_field_early = along_field(root, reference_row);
     start_following(root, left_field_early);
-    while (!full() && !too_long()) {
+    while (!full() && !too_long() && !strand_.ended_at_fold) {
       if (group_ >= 0) {
         const std::optional<bool> followed = follow_step();
         if (!followed) break;  // the rail dives into the body
@@ -623,8 +629,40 @@ class StrandGrower {
   }
 
  private:
-  void add_point(Vec3 point, GrowRule rule, int32_t cluster, int32_t group) {
+  /// Appends `point` (pushed out of the body) unless the step to it turns the strand by more
+  /// than max_turn_deg from its last step: false then, and nothing is added. Whichever rule
+  /// takes the step (the field, a card's rail, a bridge to the next card), hair does not
+  /// fold back on itself where nothing folds it; such a step is two pieces of hair read in
+  /// opposite senses meeting (a braid's crossing pieces, cards read from either end). What
+  /// folds it is a band or a weave: into a tail or braid after its band (a cluster that does
+  /// not start at the root), from the cap or from piece to piece of a braid, the bridge and
+  /// the first step along it may turn by up to continued_root_max_angle_deg, as
+  /// next_entry() let the strand in, over two steps.
+  bool add_point(Vec3 point, GrowRule rule, int32_t cluster, int32_t group) {
     if (rule != GrowRule::root && body_.push_out(point, clearance_m_)) ++strand_.pushed_out;
+    const size_t n = strand_.points.size();
+    if (n >= 2) {
+      const Vec3 last = strand_.points[n - 1] - strand_.points[n - 2];
+      const Vec3 step = point - strand_.points[n - 1];
+      const double norms = last.norm() * step.norm();
+      if (norms > 0 && last.dot(step) < min_turn_cos_ * norms) {
+        if (!gathered_ || last.dot(step) < min_gathered_turn_cos_ * norms) return false;
+        // Round the band's corner: a point 0.3 of the step along the bisector of the two
+        // directions first, so that the strand turns by half the turn and then by the
+        // rest less the corner cut (77 degrees of a 120-degree turn), never folding back
+        // in one step.
+        const Vec3 bisector = last / last.norm() + step / step.norm();
+        if (bisector.squaredNorm() > 0) {
+          Vec3 corner = strand_.points.back() + 0.3 * step.norm() * bisector.normalized();
+          if (body_.push_out(corner, clearance_m_)) ++strand_.pushed_out;
+          append(corner, rule, cluster, group);
+        }
+      }
+    }
+    append(point, rule, cluster, group);
+    return true;
+  }
+  void append(const Vec3& point, GrowRule rule, int32_t cluster, int32_t group) {
     strand_.points.push_back(point);
     strand_.rules.push_back(rule);
     strand_.clusters.push_back(cluster);
@@ -684,7 +722,7 @@ class StrandGrower {
       std::optional<Vec3> d2 = field_->direction(point + 0.5 * step_m_ * *d1);
       if (!d2) break;
       if (length_m + 0.5 * step_m_ < root_heading_m_) d2 = heading_along_paint(point, *d2);
-      if (length_m > 0 && d2->dot(direction_) < field_min_turn_cos_) break;
+      if (length_m > 0 && d2->dot(direction_) < min_turn_cos_) break;
       Vec3 next = point + step_m_ * *d2;
       if (context_.layered() && ++steps_since_layer == kLayerEvery) {
         layer_step = towards_layer(next, reference_row, length_m + step_m_, cursor, climb_per_m) /
@@ -693,7 +731,9 @@ class StrandGrower {
       }
       next += layer_step;
       if (!field_->contains(next)) break;
-      add_point(next, GrowRule::field, root_cluster_, -1);
+      // A step that would fold the strand back ends the field phase: the input strands
+      // take over, as where the field ends early.
+      if (!add_point(next, GrowRule::field, root_cluster_, -1)) break;
       // The field runs into the body here: the input strands take over, as where the
       // field ends early.
       if (ran_into_body(point, *d2)) break;
@@ -809,7 +849,9 @@ class StrandGrower {
         next += towards.normalized() * std::min(excess_m, params_.follow_pull * step_m_);
     }
     next = onto_card(next);
-    add_point(next, GrowRule::input_strand, cluster_, group_);
+    const bool added = add_point(next, GrowRule::input_strand, cluster_, group_);
+    gathered_ = false;
+    if (!added) return false;  // a step that would fold the strand: the group's end here
     if (ran_into_body(point, direction_)) return std::nullopt;
     return true;
   }
@@ -863,16 +905,26 @@ class StrandGrower {
   void enter(const StrandEntry& entry) {
     int32_t next_cluster = context_.cluster_of_strand(entry.strand);
     (next_cluster == cluster_ ? strand_.continued_same : strand_.continued_other) += 1;
+    gathered_ = !context_.cluster_starts_at_root(next_cluster);
     group_ = context_.group_of_strand(entry.strand);
     cluster_ = next_cluster;
     backward_ = entry.backward;
     visited_.push_back(group_);
     just_entered_ = true;
-    const Vec3 start = context_.bridge_target(entry, strand_.points.back(), direction_)
-                           .value_or(context_.entry_start(entry));
+    // Into a tail after its band, the bridge turns as its band lets it, no more: to the
+    // first point of the tail's strand ahead within continued_root_max_angle_deg.
+    std::optional<Vec3> target = context_.bridge_target(entry, strand_.points.back(), direction_);
+    if (!target && gathered_)
+      target = context_.bridge_target(entry, strand_.points.back(), direction_,
+                                      params_.continued_root_max_angle_deg);
+    const Vec3 start = target.value_or(context_.entry_start(entry));
     for (double gap_m = (start - strand_.points.back()).norm(); gap_m > step_m_ && !full();) {
       Vec3 towards = (start - strand_.points.back()).normalized();
-      add_point(strand_.points.back() + step_m_ * towards, GrowRule::bridge, cluster_, group_);
+      if (!add_point(strand_.points.back() + step_m_ * towards, GrowRule::bridge, cluster_,
+                     group_)) {
+        strand_.ended_at_fold = true;
+        return;
+      }
       double next_gap_m = (start - strand_.points.back()).norm();
       if (next_gap_m > gap_m - 0.25 * step_m_) break;
       gap_m = next_gap_m;
@@ -896,7 +948,7 @@ class StrandGrower {
       if (!d || d->dot(heading) <= 0) break;
       Vec3 next = point + step_m_ * *d;
       if (!field_->contains(next)) break;
-      add_point(next, GrowRule::field, root_cluster_, -1);
+      if (!add_point(next, GrowRule::field, root_cluster_, -1)) break;
       if (ran_into_body(point, *d)) break;
       heading = *d;
       point = strand_.points.back();
@@ -917,7 +969,8 @@ class StrandGrower {
   const BodySdf& body_;
   const int32_t root_cluster_;
   const double step_m_, clearance_m_, lost_m_, keep_m_, card_keep_m_, root_heading_m_;
-  const double field_min_turn_cos_;  ///< a field step turning more than field_max_turn_deg ends
+  const double min_turn_cos_;  ///< a step turning more than max_turn_deg is not taken
+  const double min_gathered_turn_cos_;  ///< ...nor into a tail after its band, more than this
   GrowingStrand strand_;
   Vec3 direction_ = Vec3::Zero();  ///< of the last step
   std::vector<int32_t> visited_;   ///< groups followed or entered
@@ -925,6 +978,7 @@ class StrandGrower {
   int32_t cluster_;                ///< the cluster the strand is in
   bool backward_ = false;          ///< the group is followed tip to root
   bool just_entered_ = false;      ///< enter()ed the group, not yet followed a step
+  bool gathered_ = false;  ///< entered a tail or braid after its band, not yet followed a step
 };
 
 /// Unit normal of body triangle `t` (right-hand rule of its vertex order).
@@ -1298,6 +1352,7 @@ GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
     result.continuations_other_cluster += strand.continued_other;
     result.strands_joining_continued_flow += strand.joined > 0 ? 1 : 0;
     result.strands_ended_at_body += strand.ended_at_body ? 1 : 0;
+    result.strands_ended_at_fold += strand.ended_at_fold ? 1 : 0;
   }
   result.strands = strand_set_from_polylines(polylines);
   result.strands.strand_attributes["cluster"] = root_cluster;

@@ -57,12 +57,14 @@ struct GrowParams {
   /// The field phase ends once a strand is this many times as long as what remains of the
   /// input strand nearest its root (from that strand's nearest point to its tip).
   double length_factor = 1.0;
-  /// The field phase also ends where the field turns the strand by more than this in one
-  /// step: hair does not fold back on itself where nothing folds it, and such a turn is a
-  /// field whose sense flips between oppositely read input strands (a braid's crossing
-  /// pieces, cards read from either end). The input strands take over there, as where the
-  /// field ends early. 180 switches it off.
-  double field_max_turn_deg = 90;
+  /// No step turns a strand by more than this from its last step, whichever rule takes it:
+  /// hair does not fold back on itself where nothing folds it, and such a turn is two
+  /// pieces of hair read in opposite senses meeting (a field whose sense flips between
+  /// oppositely read input strands, a braid's crossing pieces, cards read from either end,
+  /// a bridge back to a card behind). Along the field, the input strands take over there,
+  /// as where the field ends early; along a card or a bridge, the strand ends. 180
+  /// switches it off.
+  double max_turn_deg = 90;
   /// At the end of an input strand, the next one must begin (or end, read backwards)
   /// within this distance...
   double continue_radius_h = 0.08;
@@ -226,6 +228,9 @@ struct GrowResult {
   /// Strands that ended where a step, pushed back out of the body, hardly advanced: the
   /// card they followed, or their field, dives into the skin there.
   int64_t strands_ended_at_body = 0;
+  /// Strands that ended where their next step off the field would have turned them by more
+  /// than GrowParams::max_turn_deg (the field phase hands over to the cards instead).
+  int64_t strands_ended_at_fold = 0;
   /// Roots took any input strand: no root-type group, or they covered too little of the
   /// scalp (GrowParams::min_typed_root_scalp_share).
   bool roots_from_any_type = false;

@@ -7,6 +7,9 @@
 #include <optional>
 #include <unordered_map>
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/max_cardinality_matching.hpp>
+
 namespace hair {
 namespace {
 
@@ -61,34 +64,21 @@ std::optional<double> uv_corner_deviation_deg(const PolyMesh& mesh,
   return worst;
 }
 
-double squared_edge_length(const PolyMesh& mesh, int32_t a, int32_t b) {
-  return (mesh.vertices.row(a) - mesh.vertices.row(b)).squaredNorm();
-}
-
-bool is_longest_edge(const PolyMesh& mesh, std::span<const int32_t> triangle, int corner) {
-  double shared = squared_edge_length(mesh, triangle[corner], triangle[(corner + 1) % 3]);
-  for (int c = 0; c < 3; ++c)
-    if (squared_edge_length(mesh, triangle[c], triangle[(c + 1) % 3]) > shared * (1 + 1e-6))
-      return false;
-  return true;
-}
-
-/// The same in the texture's space, where a card is laid out flat as a grid of
-/// rectangles whatever it does in 3D: a triangulated quad of a twisted tube or card may be
-/// split along its shorter diagonal in 3D, never in its UV rectangle. False without UVs.
-bool is_longest_uv_edge(const PolyMesh& mesh, int64_t face, int corner) {
-  if (!mesh.has_uv()) return false;
-  const int64_t base = mesh.face_offsets[static_cast<size_t>(face)];
-  auto squared_uv_length = [&](int from) {
-    const int to = (from + 1) % 3;
-    const double du = mesh.corner_uv(base + from, 0) - mesh.corner_uv(base + to, 0);
-    const double dv = mesh.corner_uv(base + from, 1) - mesh.corner_uv(base + to, 1);
-    return du * du + dv * dv;
-  };
-  const double shared = squared_uv_length(corner);
-  if (!(shared > 0)) return false;
-  for (int c = 0; c < 3; ++c)
-    if (squared_uv_length(c) > shared * (1 + 1e-6)) return false;
+/// Whether the shared edge runs through one texture: its two ends have the same texture
+/// coordinates in both triangles (a quad of a card is one piece of its image). True without
+/// UVs.
+bool same_uv_across(const PolyMesh& mesh, int64_t face_a, int corner_a, int64_t face_b,
+                    int corner_b) {
+  if (!mesh.has_uv()) return true;
+  const int64_t base_a = mesh.face_offsets[static_cast<size_t>(face_a)];
+  const int64_t base_b = mesh.face_offsets[static_cast<size_t>(face_b)];
+  // a's edge runs corner_a -> corner_a+1, b's the other way: corner_b+1 -> corner_b.
+  const std::array<std::pair<int64_t, int64_t>, 2> ends = {
+      std::pair{base_a + corner_a, base_b + (corner_b + 1) % 3},
+      std::pair{base_a + (corner_a + 1) % 3, base_b + corner_b}};
+  for (auto [x, y] : ends)
+    for (int k = 0; k < 2; ++k)
+      if (std::abs(mesh.corner_uv(x, k) - mesh.corner_uv(y, k)) > 1e-6f) return false;
   return true;
 }
 
@@ -115,9 +105,7 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
                                       mesh.face_material[static_cast<size_t>(other_face)])
         continue;  // a quad paints one image
       auto other = mesh.face(other_face);
-      if (!is_longest_edge(mesh, triangle, c) && !is_longest_edge(mesh, other, other_corner) &&
-          !(is_longest_uv_edge(mesh, f, c) && is_longest_uv_edge(mesh, other_face, other_corner)))
-        continue;
+      if (!same_uv_across(mesh, f, c, other_face, other_corner)) continue;  // a UV seam
       // Shared edge a->b in this triangle (a, b, c2), b->a in the other (b, a, d):
       // the quad is (a, d, b, c2).
       int32_t apex_other = other[(other_corner + 2) % 3];
@@ -139,14 +127,48 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
            std::tie(y.rank_deviation_deg, y.worst_corner_deviation_deg, y.face_a, y.face_b);
   });
 
-  std::vector<int64_t> partner(static_cast<size_t>(mesh.face_count()), -1);
-  std::vector<std::array<int64_t, 4>> quad_corners(static_cast<size_t>(mesh.face_count()));
+  // Greedy: the most rectangular pairs first.
+  const auto face_count = static_cast<size_t>(mesh.face_count());
+  std::vector<int64_t> partner(face_count, -1);
   for (const PairCandidate& candidate : candidates) {
     if (partner[candidate.face_a] >= 0 || partner[candidate.face_b] >= 0) continue;
     partner[candidate.face_a] = candidate.face_b;
     partner[candidate.face_b] = candidate.face_a;
-    int64_t base_a = mesh.face_offsets[candidate.face_a];
-    int64_t base_b = mesh.face_offsets[candidate.face_b];
+  }
+  // A triangulated card is a perfect matching of its triangles: where the greedy pass
+  // leaves triangles alone (a pair that took one triangle of each of two quads strands
+  // their partners), Edmonds' augmenting paths re-pair along the strip until no more
+  // triangles can be paired. Each augmentation keeps every paired triangle paired.
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+  using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
+  Graph graph(face_count);
+  for (const PairCandidate& candidate : candidates)
+    boost::add_edge(static_cast<Vertex>(candidate.face_a), static_cast<Vertex>(candidate.face_b),
+                    graph);
+  std::vector<Vertex> mate(face_count, boost::graph_traits<Graph>::null_vertex());
+  for (size_t f = 0; f < face_count; ++f)
+    if (partner[f] >= 0) mate[f] = static_cast<Vertex>(partner[f]);
+  boost::edmonds_augmenting_path_finder<Graph, Vertex*,
+                                        boost::property_map<Graph, boost::vertex_index_t>::type>
+      augmenter(graph, mate.data(), boost::get(boost::vertex_index, graph));
+  while (augmenter.augment_matching()) {
+  }
+  augmenter.get_current_matching(mate.data());
+
+  std::unordered_map<uint64_t, const PairCandidate*> candidate_of_pair;
+  for (const PairCandidate& candidate : candidates)
+    candidate_of_pair[directed_edge_key(static_cast<int32_t>(candidate.face_a),
+                                        static_cast<int32_t>(candidate.face_b))] = &candidate;
+  std::vector<std::array<int64_t, 4>> quad_corners(face_count);
+  std::fill(partner.begin(), partner.end(), -1);
+  for (size_t f = 0; f < face_count; ++f) {
+    if (mate[f] == boost::graph_traits<Graph>::null_vertex() || mate[f] < f) continue;
+    const PairCandidate& candidate = *candidate_of_pair.at(
+        directed_edge_key(static_cast<int32_t>(f), static_cast<int32_t>(mate[f])));
+    partner[candidate.face_a] = candidate.face_b;
+    partner[candidate.face_b] = candidate.face_a;
+    const int64_t base_a = mesh.face_offsets[candidate.face_a];
+    const int64_t base_b = mesh.face_offsets[candidate.face_b];
     quad_corners[candidate.face_a] = {
         base_a + candidate.corner_a, base_b + (candidate.corner_b + 2) % 3,
         base_a + (candidate.corner_a + 1) % 3, base_a + (candidate.corner_a + 2) % 3};

@@ -15,15 +15,18 @@ struct QuadRecovery {
 };
 
 /// Pairs adjacent triangles back into the quads a triangulated hair card was made of,
-/// so that its rails can be read (section 4.1 reads strands from edges). Two
-/// triangles sharing an edge with consistent winding are candidates when the shared
-/// edge is the longest edge of one of them (the diagonal a triangulation adds), or, with
-/// texture coordinates, the longest of both in UV (a twisted or sheared card, such as a
-/// ringlet's tube, may be split along its shorter diagonal in 3D; its quads are still
-/// rectangles in its texture). Pairs are taken greedily by how close the quad's corners
-/// are to right angles, measured in UV where the mesh has texture coordinates and in 3D
-/// otherwise, and a pair whose worst corner in 3D is off by more than
-/// `max_corner_deviation_deg` is not taken. Deterministic: ties are broken by face id.
+/// so that its rails can be read (section 4.1 reads strands from edges). Exporters split
+/// a card's quads along either diagonal (glTF, game engines and "beauty" triangulations
+/// often along the shorter one), so which edge was added cannot be told from one pair
+/// alone; the whole card can: its triangles pair up completely. Two triangles sharing an
+/// edge with consistent winding, the same material and the same texture coordinates along
+/// the edge are candidates when the quad they make has no corner in 3D off a right angle
+/// by more than `max_corner_deviation_deg`. Candidates are taken greedily by how close the
+/// quad's corners are to right angles (in UV where the mesh has texture coordinates, where
+/// a card's quads are near rectangles whatever it does in 3D; in 3D otherwise); then
+/// Edmonds' augmenting paths (Boost.Graph) re-pair the triangles the greedy pass left alone
+/// with their neighbours' partners, until the matching is maximum. Deterministic: ties
+/// are broken by face id.
 QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviation_deg = 60.0);
 
 }  // namespace hair

@@ -133,6 +133,7 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
                      {"overlap_m", d.overlap_m},
                      {"jitter_m", d.jitter_m},
                      {"triangulate_share", d.triangulate_share},
+                     {"shorter_diagonal_share", d.shorter_diagonal_share},
                      {"reversed_share", d.reversed_share},
                      {"shuffled_share", d.shuffled_share},
                      {"scalp_lift_m", d.scalp_lift_m},
@@ -289,6 +290,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
                         "overlap_m",
                         "jitter_m",
                         "triangulate_share",
+                        "shorter_diagonal_share",
                         "reversed_share",
                         "shuffled_share",
                         "scalp_lift_m",
@@ -310,6 +312,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
     read_key(item, where, "overlap_m", d.overlap_m);
     read_key(item, where, "jitter_m", d.jitter_m);
     read_key(item, where, "triangulate_share", d.triangulate_share);
+    read_key(item, where, "shorter_diagonal_share", d.shorter_diagonal_share);
     read_key(item, where, "reversed_share", d.reversed_share);
     read_key(item, where, "shuffled_share", d.shuffled_share);
     read_key(item, where, "scalp_lift_m", d.scalp_lift_m);
@@ -373,6 +376,7 @@ void check_spec(const HairStyleSpec& spec) {
   require_range("defects.overlap_m", d.overlap_m, 0, 0.05);
   require_range("defects.jitter_m", d.jitter_m, 0, 0.01);
   require_range("defects.triangulate_share", d.triangulate_share, 0, 1);
+  require_range("defects.shorter_diagonal_share", d.shorter_diagonal_share, 0, 1);
   require_range("defects.reversed_share", d.reversed_share, 0, 1);
   require_range("defects.shuffled_share", d.shuffled_share, 0, 1 - d.reversed_share);
   require_range("defects.scalp_lift_m", d.scalp_lift_m, 0, 0.05);

@@ -835,6 +835,10 @@ std::vector<int32_t> draw_vertex_ids(int rows, int columns, const DefectSpec& de
                 : draw < defects.reversed_share + defects.shuffled_share ? VertexOrder::shuffled
                                                                          : VertexOrder::natural;
   patch.triangulated = rng.chance(defects.triangulate_share);
+  // Drawn only where asked for, so that models without it keep their random numbers.
+  const bool shorter_diagonals =
+      defects.shorter_diagonal_share > 0 && rng.chance(defects.shorter_diagonal_share);
+  patch.shorter_diagonals = patch.triangulated && shorter_diagonals;
   std::vector<int32_t> id(static_cast<size_t>(rows * columns));  // natural index -> id in patch
   std::iota(id.begin(), id.end(), 0);
   if (patch.order == VertexOrder::reversed)
@@ -845,11 +849,18 @@ std::vector<int32_t> draw_vertex_ids(int rows, int columns, const DefectSpec& de
 }
 
 /// Appends the cell between rows r, r + 1 and columns c, c + 1 as a quad, or as two
-/// triangles; `corner(r, c)` gives a corner's vertex id and records its texture
+/// triangles (split from (r, c) to (r + 1, c + 1), or along the other diagonal with
+/// `other_diagonal`); `corner(r, c)` gives a corner's vertex id and records its texture
 /// coordinates, once per face corner, in the faces' corner order.
 template <typename Corner>
-void append_cell(PolyMesh& mesh, bool triangulated, Corner&& corner, int r, int c) {
-  if (triangulated) {
+void append_cell(PolyMesh& mesh, bool triangulated, Corner&& corner, int r, int c,
+                 bool other_diagonal = false) {
+  if (triangulated && other_diagonal) {
+    std::vector<int32_t> first{corner(r, c), corner(r, c + 1), corner(r + 1, c)};
+    mesh.append_face(first);
+    std::vector<int32_t> second{corner(r, c + 1), corner(r + 1, c + 1), corner(r + 1, c)};
+    mesh.append_face(second);
+  } else if (triangulated) {
     std::vector<int32_t> first{corner(r, c), corner(r, c + 1), corner(r + 1, c + 1)};
     mesh.append_face(first);
     std::vector<int32_t> second{corner(r, c), corner(r + 1, c + 1), corner(r + 1, c)};
@@ -917,9 +928,16 @@ SynthPatch build_patch(const Stream& stream, const Piece& piece, const DefectSpe
     uv.push_back(static_cast<float>(r) / static_cast<float>(rows - 1));
     return base + id[static_cast<size_t>(r * columns + c)];
   };
+  const auto position = [&](int r, int c) {
+    const auto v = static_cast<size_t>(base + id[static_cast<size_t>(r * columns + c)]);
+    return Vec3(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+  };
   for (int r = 0; r + 1 < rows; ++r)
     for (int c = 0; c + 1 < columns; ++c) {
-      append_cell(mesh, patch.triangulated, corner, r, c);
+      const bool other = patch.shorter_diagonals &&
+                         (position(r, c + 1) - position(r + 1, c)).squaredNorm() <
+                             (position(r, c) - position(r + 1, c + 1)).squaredNorm();
+      append_cell(mesh, patch.triangulated, corner, r, c, other);
     }
   patch.face_count = mesh.face_count() - patch.first_face;
   return patch;
@@ -970,9 +988,16 @@ SynthPatch build_tube_patch(const Stream& stream, const Piece& piece, int sides,
     uv.push_back(static_cast<float>(r) / static_cast<float>(rows - 1));
     return base + id[static_cast<size_t>(r * sides + c % sides)];
   };
+  const auto position = [&](int r, int c) {
+    const auto v = static_cast<size_t>(base + id[static_cast<size_t>(r * sides + c % sides)]);
+    return Vec3(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+  };
   for (int r = 0; r + 1 < rows; ++r)
     for (int c = 0; c < sides; ++c) {
-      append_cell(mesh, patch.triangulated, corner, r, c);
+      const bool other = patch.shorter_diagonals &&
+                         (position(r, c + 1) - position(r + 1, c)).squaredNorm() <
+                             (position(r, c) - position(r + 1, c + 1)).squaredNorm();
+      append_cell(mesh, patch.triangulated, corner, r, c, other);
     }
   patch.face_count = mesh.face_count() - patch.first_face;
   return patch;

@@ -146,6 +146,10 @@ struct DefectSpec {
   double overlap_m = 0.006;
   double jitter_m = 0.0008;        ///< uniform noise on every vertex, each axis
   double triangulate_share = 0.1;  ///< patches whose quads are split into triangles
+  /// Of those, the share split along each quad's shorter diagonal in 3D, as glTF exporters,
+  /// game engines and "beauty" triangulations do (the others along the same diagonal in
+  /// every quad): on a sheared or twisted card the added edge is then no triangle's longest.
+  double shorter_diagonal_share = 0.0;
   double reversed_share = 0.1;     ///< patches numbered tip to root
   double shuffled_share = 0.05;    ///< patches numbered at random
   /// Roots this far above the head surface (a short cap lies this far off the scalp at
@@ -237,6 +241,7 @@ struct SynthPatch {
   HairStyle style = HairStyle::normal;
   VertexOrder order = VertexOrder::natural;
   bool triangulated = false;
+  bool shorter_diagonals = false;  ///< triangulated along each quad's shorter diagonal
   bool tucked = false;  ///< its tip end dives into the head (DefectSpec::tucked_share)
   int32_t rails = 2;
   int64_t first_vertex = 0, vertex_count = 0;  ///< vertex ids [first, first + count)

@@ -797,11 +797,15 @@ NextCardCounts next_card_counts(const GrowResult& result) {
 // the end of a strand's own, its nearest rail 15 mm to the side and level with it, is not bridged
 // to (sideways across the hair); a card stacked 6 mm over the end of its own and starting 7 degrees
 // (13 mm) behind it is entered ahead, not by a bridge back to its start. With bridge_max_angle_deg
-// 0, as before, the strands hop sideways into the card beside and run back into the stacked one.
+// 0 and no turn limit (max_turn_deg 180), the strands hop sideways into the card beside and run
+// back into the stacked one.
 TEST(StrandGrowing, BridgesGoOnAheadNotBackOrSidewaysToTheNextCard) {
   GrowParams ahead = params_with(kStrandCount);
   GrowParams to_start = ahead;
   to_start.bridge_max_angle_deg = 0;
+  to_start.max_turn_deg = 180;
+  GrowParams no_fold = ahead;  // bridges to the start, but no step may fold the strand back
+  no_fold.bridge_max_angle_deg = 0;
 
   const GrowInput beside = card_and_next_card(0.039, kCardOffset, 45);
   const NextCardCounts beside_ahead = next_card_counts(grow_strands(beside, ahead));
@@ -828,6 +832,9 @@ TEST(StrandGrowing, BridgesGoOnAheadNotBackOrSidewaysToTheNextCard) {
   EXPECT_GE(stacked_ahead.ending_beyond, stacked_start.ending_beyond);
   EXPECT_EQ(stacked_ahead.bridged_back, 0);
   EXPECT_GT(stacked_start.bridged_back, stacked_start.ending_beyond / 2);
+  // A bridge back to the stacked card's start is a fold: without the bridge's own angle
+  // limit, max_turn_deg still keeps every strand from running back.
+  EXPECT_EQ(next_card_counts(grow_strands(stacked, no_fold)).bridged_back, 0);
 }
 
 /// Faces without a group over the `rows` x `columns` grid of points in

@@ -202,6 +202,54 @@ TEST_P(SynthPreset, ExtractFindsEveryPatchOrientedAsTheTruthSays) {
 INSTANTIATE_TEST_SUITE_P(Presets, SynthPreset, ::testing::ValuesIn(preset_names()),
                          [](const auto& test_info) { return test_info.param; });
 
+/// Cards written as exporters write them: every quad split into two triangles along its
+/// shorter diagonal in 3D (glTF, game engines). On a wavy, twisted or braided card the added
+/// edge is then often no triangle's longest; extract pairs the triangles back into the
+/// artist's quads and reads every patch as one group, oriented as with quads (ringlets'
+/// tubes: most of their triangles).
+TEST(SynthTriangulated, CardsSplitAlongTheirShorterDiagonalsReadAsTheirQuads) {
+  for (const char* name : {"long_wavy", "ringlets", "braid", "bob"}) {
+    for (uint32_t seed : {1u, 2u}) {
+      HairStyleSpec quads_spec = varied_spec(preset(name), seed);
+      quads_spec.defects.triangulate_share = 0;
+      quads_spec.defects.shorter_diagonal_share = 1;  // the same random numbers drawn
+      HairStyleSpec triangles_spec = quads_spec;
+      triangles_spec.defects.triangulate_share = 1;
+      const SynthModel quads = generate_model(quads_spec, body_m(), seed);
+      const SynthModel triangles = generate_model(triangles_spec, body_m(), seed);
+      // Two triangles a quad (less the few a tube's collapsed tip makes degenerate).
+      ASSERT_GE(triangles.mesh.face_count(), 19 * quads.mesh.face_count() / 10) << name;
+      const std::string stem = std::string("hair_synth_triangulated_") + name;
+      const ExtractResult from_quads = extract_through_obj(quads, stem + "_quads");
+      const ExtractResult from_triangles = extract_through_obj(triangles, stem + "_triangles");
+      // A ringlet's tube twists round its axis: some of its quads have a corner more than
+      // max_quad_corner_deviation_deg off a right angle in 3D and stay two triangles, which
+      // parts the tube's rails there (its strands come in pieces).
+      const bool tubes = std::string(name) == "ringlets";
+      EXPECT_GE(static_cast<double>(from_triangles.stats.triangles_paired),
+                (tubes ? 0.94 : 0.97) * static_cast<double>(triangles.mesh.face_count()))
+          << name << " seed " << seed;
+      if (tubes) continue;
+      ASSERT_EQ(from_triangles.group_count(), static_cast<int32_t>(triangles.patches.size()))
+          << name << " seed " << seed;
+      // As many input strands as from the quads, within a few: rails are whole again.
+      EXPECT_NEAR(static_cast<double>(from_triangles.strands.strand_count()),
+                  static_cast<double>(from_quads.strands.strand_count()),
+                  0.05 * static_cast<double>(from_quads.strands.strand_count()))
+          << name << " seed " << seed;
+      const std::vector<int32_t> group_patch = group_patches(triangles, from_triangles);
+      const std::vector<GroupOrientation> orientation =
+          group_orientations(triangles, from_triangles, group_patch);
+      const std::vector<GroupOrientation> quad_orientation =
+          group_orientations(quads, from_quads, group_patches(quads, from_quads));
+      const auto agreeing = [](const std::vector<GroupOrientation>& o) {
+        return std::count(o.begin(), o.end(), GroupOrientation{});
+      };
+      EXPECT_GE(agreeing(orientation), agreeing(quad_orientation) - 1) << name << " seed " << seed;
+    }
+  }
+}
+
 TEST(SynthPresets, UnknownPresetIsAUsageError) { EXPECT_THROW(preset("beehive"), hair::Error); }
 
 TEST(SynthPresets, CorpusCyclingThePresetsMeetsTheIssuesMinimums) {

@@ -21,6 +21,7 @@
 #include "hair/geom/point_index.h"
 #include "hair/grow/card_surfaces.h"
 #include "hair/grow/strand_growing.h"
+#include "hair/grow/strand_sense.h"
 #include "hair/mesh/mesh_io.h"
 #include "hair/synth/synth_eval.h"
 #include "hair/synth/synth_model.h"
@@ -381,6 +382,14 @@ TEST(SynthGrow, DistanceToTrueStrandsPerPreset) {
       EXPECT_FALSE(std::isnan(scores.fidelity_mean) || std::isnan(scores.fidelity_p95));
       EXPECT_FALSE(std::isnan(scores.coverage_mean) || std::isnan(scores.coverage_p95));
       EXPECT_FALSE(std::isnan(scores.length_ratio));
+      // The true strands never fold back on themselves, nor do the grown strands
+      // (GrowParams::max_turn_deg): not where a braid's crossing pieces, read in opposite
+      // senses, meet, nor where a strand bridges from card to card (a point pushed back
+      // out of the body can still make a rare one).
+      int64_t hairpins = 0;
+      for (int64_t s = 0; s < grown.result.strands.strand_count(); ++s)
+        hairpins += has_hairpin(grown.result.strands.strand(s), 90) ? 1 : 0;
+      EXPECT_LE(hairpins, grown.result.strands.strand_count() / 200);
     }
     row.print(name);
     presets.add(row);
