@@ -10,6 +10,7 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
 
+
 namespace hair {
 namespace {
 
@@ -26,6 +27,9 @@ struct PairCandidate {
   int64_t face_b;
   int corner_a;  ///< the shared edge runs from corner_a to corner_a+1 of face_a
   int corner_b;  ///< and from corner_b+1 to corner_b of face_b
+  /// The shared edge is the longest of one triangle in 3D, or of both in UV: the diagonal
+  /// a triangulation of a near-rectangular quad adds.
+  bool longest;
 };
 
 double corner_deviation_deg(const PolyMesh& mesh, const std::array<int32_t, 4>& quad) {
@@ -62,6 +66,37 @@ std::optional<double> uv_corner_deviation_deg(const PolyMesh& mesh,
     worst = std::max(worst, std::abs(angle * 180.0 / std::numbers::pi - 90.0));
   }
   return worst;
+}
+
+double squared_edge_length(const PolyMesh& mesh, int32_t a, int32_t b) {
+  return (mesh.vertices.row(a) - mesh.vertices.row(b)).squaredNorm();
+}
+
+bool is_longest_edge(const PolyMesh& mesh, std::span<const int32_t> triangle, int corner) {
+  double shared = squared_edge_length(mesh, triangle[corner], triangle[(corner + 1) % 3]);
+  for (int c = 0; c < 3; ++c)
+    if (squared_edge_length(mesh, triangle[c], triangle[(c + 1) % 3]) > shared * (1 + 1e-6))
+      return false;
+  return true;
+}
+
+/// The same in the texture's space, where a card is laid out flat as a grid of
+/// rectangles whatever it does in 3D: a triangulated quad of a twisted tube or card may be
+/// split along its shorter diagonal in 3D, never in its UV rectangle. False without UVs.
+bool is_longest_uv_edge(const PolyMesh& mesh, int64_t face, int corner) {
+  if (!mesh.has_uv()) return false;
+  const int64_t base = mesh.face_offsets[static_cast<size_t>(face)];
+  auto squared_uv_length = [&](int from) {
+    const int to = (from + 1) % 3;
+    const double du = mesh.corner_uv(base + from, 0) - mesh.corner_uv(base + to, 0);
+    const double dv = mesh.corner_uv(base + from, 1) - mesh.corner_uv(base + to, 1);
+    return du * du + dv * dv;
+  };
+  const double shared = squared_uv_length(corner);
+  if (!(shared > 0)) return false;
+  for (int c = 0; c < 3; ++c)
+    if (squared_uv_length(c) > shared * (1 + 1e-6)) return false;
+  return true;
 }
 
 /// Whether the shared edge runs through one texture: its two ends have the same texture
@@ -118,8 +153,11 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
       const std::optional<double> uv_deviation = uv_corner_deviation_deg(
           mesh,
           {base + c, other_base + (other_corner + 2) % 3, base + (c + 1) % 3, base + (c + 2) % 3});
+      const bool longest =
+          is_longest_edge(mesh, triangle, c) || is_longest_edge(mesh, other, other_corner) ||
+          (is_longest_uv_edge(mesh, f, c) && is_longest_uv_edge(mesh, other_face, other_corner));
       candidates.push_back(
-          {uv_deviation.value_or(deviation), deviation, f, other_face, c, other_corner});
+          {uv_deviation.value_or(deviation), deviation, f, other_face, c, other_corner, longest});
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
@@ -127,25 +165,28 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
            std::tie(y.rank_deviation_deg, y.worst_corner_deviation_deg, y.face_a, y.face_b);
   });
 
-  // Greedy: the most rectangular pairs first.
+  // Greedy: the most rectangular pairs first, across the longest edges only.
   const auto face_count = static_cast<size_t>(mesh.face_count());
   std::vector<int64_t> partner(face_count, -1);
   for (const PairCandidate& candidate : candidates) {
+    if (!candidate.longest) continue;
     if (partner[candidate.face_a] >= 0 || partner[candidate.face_b] >= 0) continue;
     partner[candidate.face_a] = candidate.face_b;
     partner[candidate.face_b] = candidate.face_a;
   }
-  // A triangulated card is a perfect matching of its triangles: where the greedy pass
-  // leaves triangles alone (a pair that took one triangle of each of two quads strands
-  // their partners), Edmonds' augmenting paths re-pair along the strip until no more
-  // triangles can be paired. Each augmentation keeps every paired triangle paired.
+  // A triangulated card is a perfect matching of its triangles. Where the greedy pass
+  // leaves triangles alone (a quad split along its shorter diagonal, or a pair that took
+  // one triangle of each of two quads and stranded their partners), Edmonds' augmenting
+  // paths over every candidate re-pair along the strip until no more triangles can be
+  // paired.
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
   using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
+  const Vertex none = boost::graph_traits<Graph>::null_vertex();
   Graph graph(face_count);
   for (const PairCandidate& candidate : candidates)
     boost::add_edge(static_cast<Vertex>(candidate.face_a), static_cast<Vertex>(candidate.face_b),
                     graph);
-  std::vector<Vertex> mate(face_count, boost::graph_traits<Graph>::null_vertex());
+  std::vector<Vertex> mate(face_count, none);
   for (size_t f = 0; f < face_count; ++f)
     if (partner[f] >= 0) mate[f] = static_cast<Vertex>(partner[f]);
   boost::edmonds_augmenting_path_finder<Graph, Vertex*,
@@ -154,17 +195,20 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
   while (augmenter.augment_matching()) {
   }
   augmenter.get_current_matching(mate.data());
+  for (size_t f = 0; f < face_count; ++f)
+    partner[f] = mate[f] == none ? -1 : static_cast<int64_t>(mate[f]);
 
   std::unordered_map<uint64_t, const PairCandidate*> candidate_of_pair;
   for (const PairCandidate& candidate : candidates)
     candidate_of_pair[directed_edge_key(static_cast<int32_t>(candidate.face_a),
                                         static_cast<int32_t>(candidate.face_b))] = &candidate;
   std::vector<std::array<int64_t, 4>> quad_corners(face_count);
+  const std::vector<int64_t> matched = partner;
   std::fill(partner.begin(), partner.end(), -1);
   for (size_t f = 0; f < face_count; ++f) {
-    if (mate[f] == boost::graph_traits<Graph>::null_vertex() || mate[f] < f) continue;
+    if (matched[f] < static_cast<int64_t>(f)) continue;
     const PairCandidate& candidate = *candidate_of_pair.at(
-        directed_edge_key(static_cast<int32_t>(f), static_cast<int32_t>(mate[f])));
+        directed_edge_key(static_cast<int32_t>(f), static_cast<int32_t>(matched[f])));
     partner[candidate.face_a] = candidate.face_b;
     partner[candidate.face_b] = candidate.face_a;
     const int64_t base_a = mesh.face_offsets[candidate.face_a];

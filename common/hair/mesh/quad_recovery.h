@@ -21,12 +21,13 @@ struct QuadRecovery {
 /// alone; the whole card can: its triangles pair up completely. Two triangles sharing an
 /// edge with consistent winding, the same material and the same texture coordinates along
 /// the edge are candidates when the quad they make has no corner in 3D off a right angle
-/// by more than `max_corner_deviation_deg`. Candidates are taken greedily by how close the
-/// quad's corners are to right angles (in UV where the mesh has texture coordinates, where
-/// a card's quads are near rectangles whatever it does in 3D; in 3D otherwise); then
-/// Edmonds' augmenting paths (Boost.Graph) re-pair the triangles the greedy pass left alone
-/// with their neighbours' partners, until the matching is maximum. Deterministic: ties
-/// are broken by face id.
+/// by more than `max_corner_deviation_deg`. First, greedily by how close the quad's
+/// corners are to right angles (in UV where the mesh has texture coordinates, where a
+/// card's quads are near rectangles whatever it does in 3D; in 3D otherwise), the pairs
+/// whose shared edge is the longest of one triangle in 3D, or of both in UV: the diagonal
+/// of a near-rectangular quad. Then Edmonds' augmenting paths (Boost.Graph) over every
+/// candidate pair the triangles left alone with their neighbours' partners, until the
+/// matching is maximum. Deterministic: ties are broken by face id.
 QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviation_deg = 60.0);
 
 }  // namespace hair
