@@ -594,6 +594,9 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   json["defects"]["reversed_share"] = 2.0;
   EXPECT_THROW(spec_from_json(json), hair::Error);
   json = spec_json(preset("short"));
+  json["defects"]["shorter_diagonal_share"] = -0.5;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json = spec_json(preset("short"));
   json["defects"]["rails"] = 3;
   EXPECT_THROW(spec_from_json(json), hair::Error);
   json = spec_json(preset("short"));
