@@ -27,7 +27,7 @@ struct RegionRails {
   int32_t patch = 0;
   size_t region_in_patch = 0;
   std::vector<std::vector<int32_t>> open_rails;    ///< consistently oriented chains
-  std::vector<std::vector<int32_t>> parted_rails;  ///< halves of parted rails, top down
+  std::vector<std::vector<int32_t>> parted_rails;  ///< halves of parted rails, root to tip
   OrientationEvidence evidence;
   std::optional<OrientationDecision> decision;
 };
@@ -129,30 +129,50 @@ double rail_length(const Points3f& vertices, const std::vector<int32_t>& rail) {
   return length;
 }
 
-/// A rail draped over the head (a card from one side over the parting to the other)
-/// has its root inside: its highest point is at least `min_side_share` of its length
-/// from either end, both ends lie lower by `min_side_drop` of their side's length, and
-/// both ends hang off the head (farther than `min_end_distance` from it; a cap's rail
-/// from the hairline over the crown to a band has both ends on the head).
-/// Returns the two halves, both from the highest point down, or nothing.
-std::optional<std::array<std::vector<int32_t>, 2>> part_draped_rail(
-    const Points3f& vertices, const std::vector<int32_t>& rail, double min_side_share,
-    double min_side_drop, const TriangleMeshDistance& head_distance, double min_end_distance) {
-  size_t top = 0;
+/// Which of a rail's inner extremes part_rail_at_inner_extreme() looks for.
+enum class InnerExtreme { highest, lowest };
+
+/// A card's rail runs from root to tip, so its height changes one way along it, give or
+/// take waves and curls. A rail whose highest or lowest point lies well inside it, with
+/// both sides falling away from that point, is two strands meeting there:
+///  - highest (a card draped over the head, from one side over the parting to the
+///    other): two strands with their roots at the top, their tips at the rail's ends;
+///  - lowest (a shell tail or lock modelled as a closed pouch, whose along-lines run
+///    down its front, round its tip and back up its back): two strands from the rail's
+///    ends down to their tips at the fold.
+/// Each side is at least `min_side_share` of the rail's length and drops from the
+/// extreme (or rises to it) by at least `min_side_drop` of its own length, and the tips
+/// hang off the head (farther than `min_tip_distance` from it: a cap's rail from the
+/// hairline over the crown to a band has both ends on the head, and is one strand).
+/// Returns the two halves, each from root to tip, or nothing.
+std::optional<std::array<std::vector<int32_t>, 2>> part_rail_at_inner_extreme(
+    const Points3f& vertices, const std::vector<int32_t>& rail, InnerExtreme extreme,
+    double min_side_share, double min_side_drop, const TriangleMeshDistance& head_distance,
+    double min_tip_distance) {
+  float sign = extreme == InnerExtreme::highest ? 1.0f : -1.0f;
+  size_t inner = 0;
   for (size_t i = 1; i < rail.size(); ++i)
-    if (vertices(rail[i], 1) > vertices(rail[top], 1)) top = i;
-  if (top == 0 || top + 1 == rail.size()) return std::nullopt;
-  std::vector<int32_t> before(rail.begin(), rail.begin() + static_cast<std::ptrdiff_t>(top) + 1);
-  std::vector<int32_t> after(rail.begin() + static_cast<std::ptrdiff_t>(top), rail.end());
+    if (sign * vertices(rail[i], 1) > sign * vertices(rail[inner], 1)) inner = i;
+  if (inner == 0 || inner + 1 == rail.size()) return std::nullopt;
+  // Both sides from the inner extreme out to the rail's ends.
+  std::vector<int32_t> before(rail.begin(), rail.begin() + static_cast<std::ptrdiff_t>(inner) + 1);
+  std::vector<int32_t> after(rail.begin() + static_cast<std::ptrdiff_t>(inner), rail.end());
   std::reverse(before.begin(), before.end());
   double total = rail_length(vertices, rail);
+  auto far_from_head = [&](int32_t vertex) {
+    return head_distance.distance(vertices.row(vertex).cast<double>().transpose()) >=
+           min_tip_distance;
+  };
   for (const auto* side : {&before, &after}) {
     double length = rail_length(vertices, *side);
-    double drop = vertices(side->front(), 1) - vertices(side->back(), 1);
+    double drop = sign * (vertices(side->front(), 1) - vertices(side->back(), 1));
     if (length < min_side_share * total || drop < min_side_drop * length) return std::nullopt;
-    if (head_distance.distance(vertices.row(side->back()).cast<double>().transpose()) <
-        min_end_distance)
-      return std::nullopt;
+    if (extreme == InnerExtreme::highest && !far_from_head(side->back())) return std::nullopt;
+  }
+  if (extreme == InnerExtreme::lowest) {
+    if (!far_from_head(rail[inner])) return std::nullopt;
+    std::reverse(before.begin(), before.end());  // from the rail's ends down to the fold
+    std::reverse(after.begin(), after.end());
   }
   return std::array<std::vector<int32_t>, 2>{before, after};
 }
@@ -499,7 +519,7 @@ Triangles3i head_triangles_of(const Points3f& body_vertices, const Triangles3i& 
 }
 
 /// The rails of every region of every patch (the chains of its along family; short
-/// fragments dropped, closed and draped rails parted), and what they say about their
+/// fragments dropped, closed, draped and folded rails parted), and what they say about their
 /// direction.
 std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& flow,
                                       const EdgeFaces& edge_faces,
@@ -509,6 +529,15 @@ std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& f
                                       const ExtractParams& params, double head_height_m,
                                       ExtractStats& stats) {
   const Points3f& vertices = mesh.vertices;
+  auto part_at_inner_extreme = [&](const std::vector<int32_t>& chain) {
+    for (InnerExtreme extreme : {InnerExtreme::highest, InnerExtreme::lowest})
+      if (auto halves = part_rail_at_inner_extreme(
+              vertices, chain, extreme, params.parting_min_side_share,
+              params.parting_min_side_drop, head_distance,
+              params.parting_min_end_distance_h * head_height_m))
+        return halves;
+    return std::optional<std::array<std::vector<int32_t>, 2>>{};
+  };
   std::vector<RegionRails> regions;
   for (int32_t p = 0; p < static_cast<int32_t>(topologies.size()); ++p) {
     stats.family_conflicts += topologies[p].family_conflicts;
@@ -526,9 +555,7 @@ std::vector<RegionRails> region_rails(const PolyMesh& mesh, const PaintedFlow& f
         } else if (chain.size() > 2 && chain.front() == chain.back()) {
           for (auto& half : part_closed_rail(vertices, chain)) region.parted_rails.push_back(half);
           ++stats.rails_parted;
-        } else if (auto halves = part_draped_rail(
-                       vertices, chain, params.parting_min_side_share, params.parting_min_side_drop,
-                       head_distance, params.parting_min_end_distance_h * head_height_m)) {
+        } else if (auto halves = part_at_inner_extreme(chain)) {
           for (auto& half : *halves) region.parted_rails.push_back(half);
           ++stats.rails_parted;
         } else {

@@ -62,12 +62,14 @@ struct ExtractParams {
   /// Share of confidently decided regions that must agree on a texture convention
   /// (v axis along the hair; v growing root to tip) for the mesh to use it.
   double convention_min_agreement = 0.85;
-  /// A rail is parted at its highest point (a card draped over the head, or a loop)
-  /// when each side is at least this share of its length...
+  /// A rail is parted at its highest point (a card draped over the head) or its lowest
+  /// (a shell tail folded at its tip) when each side is at least this share of its length...
   double parting_min_side_share = 0.25;
-  /// ...and each side's end lies lower than the top by this share of the side's length.
+  /// ...and each side's end lies lower (higher) than that point by this share of the
+  /// side's length.
   double parting_min_side_drop = 0.25;
-  /// ...and both ends hang off the head by more than this fraction of H.
+  /// ...and the tips (the ends of a draped rail, the fold of a folded one) hang off the
+  /// head by more than this fraction of H.
   double parting_min_end_distance_h = 0.1;
   /// Along-chains shorter than this share of their region's longest are fragments
   /// (colouring conflicts around poles) and are dropped.
@@ -111,7 +113,7 @@ struct ExtractStats {
   int64_t degenerate_faces_removed = 0;
   int64_t triangles_paired = 0;
   int64_t triangles_left = 0;
-  int64_t rails_parted = 0;       ///< closed or draped rails cut in two at their top
+  int64_t rails_parted = 0;  ///< closed, draped or folded rails cut in two
   int64_t fragments_dropped = 0;  ///< along-chains too short to be rails
   int64_t family_conflicts = 0;
   std::array<int64_t, 7> groups_by_rule{};         ///< indexed by OrientationRule

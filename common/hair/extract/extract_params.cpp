@@ -91,12 +91,13 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "share of a mesh's clear patches that must agree on a texture convention",
              ParamRange::closed(0.5, 1));
   params.add("parting_min_side_share", p.parting_min_side_share,
-             "a rail is parted at its top when each side is at least this share of it...",
+             "a rail is parted at its highest or lowest inner point when each side is at least "
+             "this share of it...",
              ParamRange::closed(0, 0.5));
   params.add("parting_min_side_drop", p.parting_min_side_drop,
-             "...each side drops by this share of its length...", ParamRange::closed(0, 1));
+             "...each side falls away from that point by this share of its length...", ParamRange::closed(0, 1));
   params.add("parting_min_end_distance_h", p.parting_min_end_distance_h,
-             "...and both ends hang off the head by this distance, in H", ParamRange::at_least(0));
+             "...and the tips (draped ends, a fold) hang off the head by this distance, in H", ParamRange::at_least(0));
   params.add("scalp_distance_h", p.scalp_distance_h,
              "body triangles above the neck within this distance of the hair mesh, in H, "
              "form the scalp",

@@ -114,6 +114,7 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["hang_volume_m"] = c.hang_volume_m;
     item["rooted_under_volume"] = c.rooted_under_volume;
     item["tube_sides"] = c.tube_sides;
+    item["folded_shell_thickness_m"] = c.folded_shell_thickness_m;
     item["cap_volume_m"] = c.cap_volume_m;
     item["cap_drape"] = c.cap_drape;
     item["braid_lift_m"] = c.braid_lift_m;
@@ -218,6 +219,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
                           "ringlet_radius_m",
                           "ringlet_pitch_m",
                           "tube_sides",
+                          "folded_shell_thickness_m",
                           "cap_volume_m",
                           "cap_drape",
                           "hang_volume_m",
@@ -265,6 +267,7 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
       read_key(item, where, "ringlet_radius_m", c.ringlet_radius_m);
       read_key(item, where, "ringlet_pitch_m", c.ringlet_pitch_m);
       read_key(item, where, "tube_sides", c.tube_sides);
+      read_key(item, where, "folded_shell_thickness_m", c.folded_shell_thickness_m);
       read_key(item, where, "cap_volume_m", c.cap_volume_m);
       read_key(item, where, "hang_volume_m", c.hang_volume_m);
       read_key(item, where, "rooted_under_volume", c.rooted_under_volume);
@@ -361,6 +364,9 @@ void check_spec(const HairStyleSpec& spec) {
     require_range(where + "braid_tip_width_share", c.braid_tip_width_share, 0.1, 1.0);
     require_range(where + "braid_cards_per_lobe", c.braid_cards_per_lobe, 1, 12);
     if (c.tube_sides != 0) require_range(where + "tube_sides", c.tube_sides, 3, 32);
+    require_range(where + "folded_shell_thickness_m", c.folded_shell_thickness_m, 0, 0.1);
+    if (c.folded_shell_thickness_m > 0 && c.tube_sides > 0)
+      throw Error::usage(where + "folded_shell_thickness_m and tube_sides: a piece is meshed one way");
     if (c.rooted_under_volume && c.kind != ComponentSpec::Kind::normal)
       throw Error::usage(where + "rooted_under_volume: for normal hair only (kind \"normal\")");
   }

@@ -1003,6 +1003,76 @@ SynthPatch build_tube_patch(const Stream& stream, const Piece& piece, int sides,
   return patch;
 }
 
+/// A piece meshed as a closed pouch (ComponentSpec::folded_shell_thickness_m): rows run
+/// down the piece's front sheet (half the thickness out along the stream's normal) from
+/// its start to its end, the fold's row on the centre at the end, then back up the back
+/// sheet (half the thickness in) to the start; `rails` columns across the strip's width.
+/// Texture u runs across (0 to 1), v from the piece's start (0) to its end (1) on both
+/// sheets. Vertex order, triangulation and jitter as build_patch.
+SynthPatch build_folded_patch(const Stream& stream, const Piece& piece, double thickness_m,
+                              const DefectSpec& defects, Rng& rng, std::vector<float>& positions,
+                              PolyMesh& mesh, std::vector<float>& uv,
+                              std::vector<float>& vertex_along_m) {
+  SynthPatch patch;
+  patch.style = piece.style;
+  patch.rails = std::max(2, piece.rails);
+  patch.start_m = piece.start_m;
+  patch.end_m = piece.end_m;
+  const int columns = patch.rails;
+  const int sheet_rows = std::max(
+      2,
+      static_cast<int>(std::lround((piece.end_m - piece.start_m) / defects.segment_length_m)) + 1);
+  const int rows = 2 * sheet_rows - 1;  // the fold's row is shared by both sheets
+  const int count = rows * columns;
+  const std::vector<int32_t> id = draw_vertex_ids(rows, columns, defects, rng, patch);
+  auto base = static_cast<int32_t>(vertex_along_m.size());
+  patch.first_vertex = base;
+  patch.vertex_count = count;
+  patch.first_face = mesh.face_count();
+  positions.resize(3 * static_cast<size_t>(base + count));
+  vertex_along_m.resize(static_cast<size_t>(base + count));
+  // Row r lies at the piece's fraction along() and on the sheet side() (+1 front, -1 back).
+  const auto along = [&](int r) {
+    const int k = r < sheet_rows ? r : rows - 1 - r;
+    return static_cast<double>(k) / (sheet_rows - 1);
+  };
+  const auto side = [&](int r) { return r + 1 < sheet_rows ? 1.0 : r + 1 == sheet_rows ? 0.0 : -1.0; };
+  for (int r = 0; r < rows; ++r) {
+    const double s = piece.start_m + (piece.end_m - piece.start_m) * along(r);
+    const Vec3 centre = stream.point_at(s), across = stream.across_at(s),
+               normal = stream.normal_at(s);
+    const double width = stream.width_at(s);
+    for (int c = 0; c < columns; ++c) {
+      const double u = static_cast<double>(c) / (columns - 1) - 0.5;
+      const Vec3 jitter(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      const Vec3 p = centre + u * width * across + 0.5 * thickness_m * side(r) * normal +
+                     defects.jitter_m * jitter;
+      const int32_t v = base + id[static_cast<size_t>(r * columns + c)];
+      for (int k = 0; k < 3; ++k)
+        positions[3 * static_cast<size_t>(v) + static_cast<size_t>(k)] = static_cast<float>(p[k]);
+      vertex_along_m[static_cast<size_t>(v)] = static_cast<float>(s);
+    }
+  }
+  auto corner = [&](int r, int c) {
+    uv.push_back(static_cast<float>(c) / static_cast<float>(columns - 1));
+    uv.push_back(static_cast<float>(along(r)));
+    return base + id[static_cast<size_t>(r * columns + c)];
+  };
+  const auto position = [&](int r, int c) {
+    const auto v = static_cast<size_t>(base + id[static_cast<size_t>(r * columns + c)]);
+    return Vec3(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+  };
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int c = 0; c + 1 < columns; ++c) {
+      const bool other = patch.shorter_diagonals &&
+                         (position(r, c + 1) - position(r + 1, c)).squaredNorm() <
+                             (position(r, c) - position(r + 1, c + 1)).squaredNorm();
+      append_cell(mesh, patch.triangulated, corner, r, c, other);
+    }
+  patch.face_count = mesh.face_count() - patch.first_face;
+  return patch;
+}
+
 /// One patch for the streams `stream_ids` of a short cap meshed in rings (a wig cap):
 /// vertex (k, r) on stream k at arc length r * segment_length_m, quads between
 /// neighbouring streams (the last joined to the first) for rows both reach. Texture u runs
@@ -1323,14 +1393,14 @@ void add_true_strands_under_volume(const Stream& stream, int32_t stream_id, cons
 const std::vector<std::string>& painted_preset_names() {
   static const std::vector<std::string> names = {
       "ring_cap", "cap_over_layer", "mohawk", "low_tail",  "face_locks",
-      "bun",      "ringlets",       "bob",    "swirl_cap", "volume_bob"};
+      "bun",      "ringlets",       "bob",    "swirl_cap", "volume_bob", "shell_tail"};
   return names;
 }
 
 bool in_training_corpus(const std::string& name) {
   // The bob's clusters come out shorter than a real bob's (0.54 H against bob02's
   // 0.86 H), and trained on, they pulled short03's cap to normal (docs/synth.md).
-  return name != "bob" && name != "swirl_cap" && name != "volume_bob";
+  return name != "bob" && name != "swirl_cap" && name != "volume_bob" && name != "shell_tail";
 }
 
 const std::vector<std::string>& preset_names() {
@@ -1504,6 +1574,21 @@ HairStyleSpec painted_preset(const std::string& name) {
     spec = painted_preset("bob");
     spec.name = name;
     for (ComponentSpec& component : spec.components) component.hang_volume_m = 0.03;
+  } else if (name == "shell_tail") {
+    // A ponytail whose tail is a closed shell, as game artists model one (Mozilla Hubs'
+    // ponytails): each tail strip a pouch 1.5 cm thick, its rails running down the front,
+    // round the tip and back up the back to the band.
+    ComponentSpec tail;
+    tail.kind = Kind::ponytail;
+    tail.stream_count = 12;
+    tail.band_polar_deg = 80;
+    tail.length_min_m = 0.30;
+    tail.length_max_m = 0.38;
+    tail.strip_width_m = 0.05;
+    tail.folded_shell_thickness_m = 0.015;
+    spec.defects.normal_pieces_max = 1;
+    spec.defects.painted_texture = true;
+    spec.components = {tail};
   } else if (name == "swirl_cap") {
     // A one-piece wig cap as ring_cap, but meshed in a grid of latitudes and longitudes
     // that pays no heed to its hair (short01's and short03's caps), its hair swirling round
@@ -1797,13 +1882,18 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     if (in_rings) ring_streams[static_cast<size_t>(stream.component)].push_back(stream_id);
     int pieces = in_rings ? 0 : static_cast<int>(stream.pieces.size());
     for (int k = 0; k < pieces; ++k) {
-      const int tube_sides = spec.components[static_cast<size_t>(stream.component)].tube_sides;
+      const Piece& piece = stream.pieces[static_cast<size_t>(k)];
+      const bool folded = component.folded_shell_thickness_m > 0 && piece.style != HairStyle::fixed &&
+                          stream.scalp_lift_m.empty();
       SynthPatch patch =
-          tube_sides > 0
-              ? build_tube_patch(stream, stream.pieces[static_cast<size_t>(k)], tube_sides,
-                                 spec.defects, rng, positions, model.mesh, uv, model.vertex_along_m)
-              : build_patch(stream, stream.pieces[static_cast<size_t>(k)], spec.defects, head, rng,
-                            positions, model.mesh, uv, model.vertex_along_m);
+          component.tube_sides > 0
+              ? build_tube_patch(stream, piece, component.tube_sides, spec.defects, rng, positions,
+                                 model.mesh, uv, model.vertex_along_m)
+          : folded ? build_folded_patch(stream, piece, component.folded_shell_thickness_m,
+                                        spec.defects, rng, positions, model.mesh, uv,
+                                        model.vertex_along_m)
+                   : build_patch(stream, piece, spec.defects, head, rng, positions, model.mesh, uv,
+                                 model.vertex_along_m);
       patch.stream = stream_id;
       patch.index_in_stream = k;
       // Algorithm 1 of the paper: no preceding group and no following one: root-free; no

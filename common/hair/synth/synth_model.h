@@ -124,6 +124,13 @@ struct ComponentSpec {
   /// Above 0: each piece is meshed as a closed tube of this many sides round the stream's
   /// centre (its diameter the strip width), as artists model ringlets, not a flat strip.
   int tube_sides = 0;
+  /// Normal hair and a ponytail's tail: above 0, each piece of hanging hair (not a cap's
+  /// grid) is meshed as a closed pouch, as game artists model a tail as a shell (Mozilla
+  /// Hubs' ponytails): one strip down the piece's front from its start to its end, round
+  /// its end and back up its back, the two sheets this far apart. The rails along the
+  /// hair run down and back up, folding at the tip; the texture's v runs from the start
+  /// (0) to the end (1) on both sheets.
+  double folded_shell_thickness_m = 0.0;
 };
 
 /// How patches are cut from streams and how much they are spoiled; every defect has a
@@ -193,13 +200,14 @@ const std::vector<std::string>& preset_names();
 /// one-piece cap in rings whose hair swirls round its whorl, painted with a tiled texture
 /// that does not fade: the paint gives the axis, the hair's own lie its sense, as short01's
 /// cap), "volume_bob" (the bob with its cards standing up to 3 cm more off the head, as
-/// bob01's shell does, its truth rooted under them).
+/// bob01's shell does, its truth rooted under them), "shell_tail" (a ponytail whose tail
+/// is meshed as closed pouches, its rails folding back at the tip).
 const std::vector<std::string>& painted_preset_names();
 
 /// Whether corpus_plan() puts the preset `name` in the training corpus: every preset but
 /// "bob", whose clusters come out shorter than a real bob's (docs/synth.md), and
-/// "swirl_cap" and "volume_bob", added for extract and grow after the corpus was drawn (a
-/// preset in the corpus renumbers every model after it).
+/// "swirl_cap", "volume_bob" and "shell_tail", presets for extract and grow kept out of the
+/// drawn training corpus (a preset in the corpus renumbers every model after it).
 bool in_training_corpus(const std::string& name);
 
 /// The preset `name`; throws hair::Error (usage) naming the known presets otherwise.
