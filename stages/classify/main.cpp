@@ -6,6 +6,7 @@
 #include "hair/core/stage_app.h"
 #include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
+#include "hair/style/classify_params.h"
 #include "hair/style/cluster_styles.h"
 #include "hair/style/hair_style.h"
 #include "hair/style/style_io.h"
@@ -32,50 +33,8 @@ int main(int argc, char** argv) {
                        "TOML file of [[pin]] tables that pin clusters' styles, each by "
                        "cluster = ID or point_m = [x, y, z] and style = \"fixed\" "
                        "(docs/classify.md)");
-  std::string classifier = "svm";
-  app.params().add("classifier", classifier,
-                   "whose class is the style: svm (the better on real meshes held out, "
-                   "docs/classify.md) or random_forest (the paper's better one)",
-                   {"random_forest", "svm"});
-  hair::DecisiveStyleRules rules;
-  app.params().add("decisive_rules", rules.enabled,
-                   "let the paper's criteria decide where they are decisive: hair lying on the "
-                   "scalp to its ends is short, a cap gathered into a band is fixed "
-                   "(docs/classify.md)");
-  const auto share = hair::ParamRange::closed(0.0, 1.0);
-  const auto distance = hair::ParamRange::closed(0.0, 10.0);
-  app.params().add("short_far_scalp_distance_h", rules.short_far_scalp_distance_h,
-                   "short rule: the far particles (95th percentile) at most this far from the "
-                   "scalp, in H",
-                   distance);
-  app.params().add("short_tip_share", rules.short_tip_share,
-                   "short rule: at least this share of the strands end in the cluster", share);
-  app.params().add("short_gathering_ratio", rules.short_gathering_ratio,
-                   "short rule: the ends at least this spread (equation 6's ratio)", share);
-  app.params().add("fixed_root_share", rules.fixed_root_share,
-                   "fixed rule: at least this share of the strands start at roots", share);
-  app.params().add("fixed_gathering_ratio", rules.fixed_gathering_ratio,
-                   "fixed rule: the ends at most this spread (equation 6's ratio)", share);
-  app.params().add("fixed_far_scalp_distance_h", rules.fixed_far_scalp_distance_h,
-                   "fixed rule: the far particles at most this far from the scalp, in H", distance);
-  app.params().add("fixed_tip_share", rules.fixed_tip_share,
-                   "fixed rule: at most this share of the strands end in the cluster (the "
-                   "others go on past the band)",
-                   share);
-  app.params().add("ungathered_root_share", rules.ungathered_root_share,
-                   "not fixed: at least this share of the strands start at roots, ...", share);
-  app.params().add("ungathered_tip_share", rules.ungathered_tip_share,
-                   "not fixed: ... at least this share of them end in the cluster, ...", share);
-  app.params().add("ungathered_gathering_ratio", rules.ungathered_gathering_ratio,
-                   "not fixed: ... and their ends at least this spread (equation 6's ratio): "
-                   "gathered into nothing, they are not fixed, and the classifier's best other "
-                   "style is taken",
-                   share);
-  double unsure_below = hair::kDefaultUnsureBelow;
-  app.params().add("unsure_below", unsure_below,
-                   "a cluster whose classifier is less sure of its style is unsure (styles.h5, the "
-                   "picture, the log): the SVM's margin, or the forest's share of votes",
-                   hair::ParamRange::closed(0.0, 1.0));
+  hair::ClassifyStageParams params;
+  hair::declare_classify_params(app.params(), params);
 
   return app.run(argc, argv, [&] {
     hair::StyleModel model = hair::read_style_model(model_path, {});
@@ -87,7 +46,7 @@ int main(int argc, char** argv) {
                                                                // take the paper's or ours
     hair::StyleFeatures features = hair::style_features(input, feature_params);
     hair::ClusterStyles styles =
-        hair::cluster_styles(features, model, *hair::style_classifier_from_name(classifier), rules);
+        hair::cluster_styles(features, model, *hair::style_classifier_from_name(params.classifier), params.rules);
     // The user's pins, read and resolved before anything is written (a bad file: one
     // line, exit 2, no output).
     if (!overrides_path.empty()) {
@@ -125,7 +84,7 @@ int main(int argc, char** argv) {
       spdlog::info("{}: decided by the paper's criteria: {}", strands_path, ruled_list);
     std::string not_fixed_list;
     for (size_t c = 0; c < styles.fixed_ruled_out.size(); ++c) {
-      const int8_t said = classifier == "svm" ? styles.svm_style[c] : styles.forest_style[c];
+      const int8_t said = params.classifier == "svm" ? styles.svm_style[c] : styles.forest_style[c];
       if (styles.fixed_ruled_out[c] && !styles.pinned[c] && !styles.ruled[c] &&
           said == static_cast<int8_t>(hair::HairStyle::fixed))
         not_fixed_list +=
@@ -136,8 +95,8 @@ int main(int argc, char** argv) {
       spdlog::info(
           "{}: the {} said fixed, but the strands start at the roots and end in the "
           "cluster without gathering; its best other style: {}",
-          strands_path, classifier == "svm" ? "SVM" : "random forest", not_fixed_list);
-    const std::vector<uint8_t> unsure = hair::unsure_clusters(styles, unsure_below);
+          strands_path, params.classifier == "svm" ? "SVM" : "random forest", not_fixed_list);
+    const std::vector<uint8_t> unsure = hair::unsure_clusters(styles, params.unsure_below);
     std::string unsure_list;
     for (size_t c = 0; c < unsure.size(); ++c)
       if (unsure[c])
@@ -147,7 +106,7 @@ int main(int argc, char** argv) {
                         styles.confidence[c]);
     if (!unsure_list.empty())
       spdlog::info("{}: unsure (confidence under {:.2f}; pin them with --overrides if wrong): {}",
-                   strands_path, unsure_below, unsure_list);
+                   strands_path, params.unsure_below, unsure_list);
     if (classified < static_cast<int>(styles.style.size()))
       spdlog::info("{}: {} clusters have no grown strands and are not classified", strands_path,
                    styles.style.size() - static_cast<size_t>(classified));
@@ -155,7 +114,7 @@ int main(int argc, char** argv) {
     hair::AtomicFile output(app.output_path());
     hair::h5::File file = hair::h5::File::create(output.temporary_path(), app.output_path());
     hair::write_styles_file(file, styles, features, model_path, model.feature_set,
-                            input.head_height_m, unsure_below);
+                            input.head_height_m, params.unsure_below);
     std::vector<std::pair<std::string, std::filesystem::path>> inputs{{"extract", extract_path},
                                                                       {"clusters", clusters_path},
                                                                       {"strands", strands_path},

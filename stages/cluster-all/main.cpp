@@ -20,22 +20,7 @@ int main(int argc, char** argv) {
       .add_option("MIDDLE_H5", middle_path, "middle.h5 from the cluster-middle stage")
       ->required();
   hair::HairClusteringParams params;
-  hair::add_graph_clustering_params(app.params(), params.graph);
-  app.params().add("similarity_distance_max_h", params.similarity.distance_max_h,
-                   "no edge between free-root groups whose roots or tips are this far apart, "
-                   "in H",
-                   hair::ParamRange::above(0));
-  app.params().add("split_at_type_change", params.split_at_type_change,
-                   "divide a cluster where its root-type groups meet its other groups");
-  app.params().add(
-      "split_continued_roots", params.split_continued_roots,
-      "in that division, a root-type group whose start continues another group of "
-      "its cluster (within the connectivity bounds) goes with the distal part, which does "
-      "not start at the root (docs/clustering.md)");
-  app.params().add("continued_root_min_scalp_distance_h",
-                   params.continued_root_min_scalp_distance_h,
-                   "...when its centre strand starts at least this far from the scalp, in H",
-                   hair::ParamRange::at_least(0));
+  hair::declare_cluster_all_params(app.params(), params);
 
   return app.run(argc, argv, [&] {
     hair::TypedGroups groups = hair::read_typed_groups(hair::h5::File::open_read_only(types_path));

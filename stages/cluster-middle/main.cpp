@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   std::string types_path;
   app.cli().add_option("TYPES_H5", types_path, "types.h5 from the typeify stage")->required();
   hair::GraphClusteringParams params;
-  hair::add_graph_clustering_params(app.params(), params);
+  hair::declare_cluster_middle_params(app.params(), params);
 
   return app.run(argc, argv, [&] {
     hair::TypedGroups groups = hair::read_typed_groups(hair::h5::File::open_read_only(types_path));

@@ -15,6 +15,7 @@
 #include "hair/h5/provenance.h"
 #include "hair/h5/schema_validation.h"
 #include "hair/interp/frames_io.h"
+#include "hair/interp/interpolation_params.h"
 #include "hair/interp/strand_interpolation.h"
 
 namespace {
@@ -48,32 +49,7 @@ int main(int argc, char** argv) {
                        "frames of guides.h5 to compute: A:B (A to B-1), A:, :B or N; all by "
                        "default");
   hair::InterpolationParams params;
-  app.params().add("candidate_guides", params.candidate_guides,
-                   "guides searched around a strand's anchor for the three nearest",
-                   hair::ParamRange::closed(3, 1000));
-  app.params().add("min_direction_cosine", params.min_direction_cosine,
-                   "barycentric only if the three guides' directions have pairwise cosines "
-                   "at least this (else clump)",
-                   hair::ParamRange::closed(-1, 1));
-  app.params().add("min_triangle_aspect", params.min_triangle_aspect,
-                   "barycentric only if the guides' anchor triangle's smallest height is at "
-                   "least this share of its longest edge",
-                   hair::ParamRange::closed(0, 1));
-  app.params().add("min_guide_length_ratio", params.min_guide_length_ratio,
-                   "a guide a strand follows is at least this share of the strand's length "
-                   "(barycentric: all three, else clump; clump: from another cluster simulated "
-                   "alike if its own has none among the candidates)",
-                   hair::ParamRange::closed(0, 1));
-  app.params().add("wisp_bridge_length_m", params.wisp_bridge_length_m,
-                   "a strand bound to a braid's wisp is bridged from the head to its first "
-                   "bound point over at least this length, its last held points giving way "
-                   "(0: held right up to the braid)",
-                   hair::ParamRange::closed(0, 1));
-  app.params().add("wisp_seam_length_m", params.wisp_seam_length_m,
-                   "a braided strand's points within this arc length of a seam between two "
-                   "wisp tetrahedra move partly with the other one too (half at the seam; 0: "
-                   "each with its own only)",
-                   hair::ParamRange::closed(0, 1));
+  hair::declare_interpolation_params(app.params(), params);
 
   return app.run(argc, argv, [&] {
     hair::h5::File guides_file = hair::h5::File::open_read_only(guides_path);

@@ -5,6 +5,7 @@
 #include "hair/cluster/group_scalp_distance.h"
 #include "hair/cluster/typeify.h"
 #include "hair/cluster/typeify_io.h"
+#include "hair/cluster/typeify_params.h"
 #include "hair/core/atomic_file.h"
 #include "hair/core/stage_app.h"
 #include "hair/extract/extract_io.h"
@@ -18,32 +19,7 @@ int main(int argc, char** argv) {
   std::string extract_path;
   app.cli().add_option("EXTRACT_H5", extract_path, "extract.h5 from the extract stage")->required();
   hair::TypeifyParams params;
-  hair::ParamSet& p = app.params();
-  p.add("centre_points", params.centre_points,
-        "points of each group's centre strand (its strands resampled and averaged)",
-        hair::ParamRange::closed(4, 1000));
-  p.add("neighbour_distance_h", params.neighbour_distance_h,
-        "a group is close to another's beginning or end within this distance, in H",
-        hair::ParamRange::above(0));
-  p.add("root_scalp_distance_h", params.root_scalp_distance_h,
-        "a group starting this close to the scalp, in H, has before it only the groups ending "
-        "near its start; 0 turns this off",
-        hair::ParamRange::at_least(0));
-  p.add("connect_angle_deg", params.connect_angle_deg,
-        "largest angle between a root group's end and a nearby group's start for the two to "
-        "be connected; 0 takes it from the distribution of those angles (Otsu)",
-        hair::ParamRange::closed(0, 180));
-  p.add("min_connect_angle_deg", params.min_connect_angle_deg,
-        "lower bound of the threshold taken from the distribution",
-        hair::ParamRange::closed(0, 180));
-  p.add("max_connect_angle_deg", params.max_connect_angle_deg,
-        "upper bound of the threshold taken from the distribution",
-        hair::ParamRange::closed(0, 180));
-  p.add_check([&]() -> std::optional<std::string> {
-    if (params.min_connect_angle_deg > params.max_connect_angle_deg)
-      return "min_connect_angle_deg must not exceed max_connect_angle_deg";
-    return std::nullopt;
-  });
+  hair::declare_typeify_params(app.params(), params);
 
   return app.run(argc, argv, [&] {
     hair::h5::File extract = hair::h5::File::open_read_only(extract_path);

@@ -238,10 +238,7 @@ TEST_F(ClassifyCli, EveryClusterCarriesItsConfidenceAndTheUnsureOnesAreMarked) {
 
   // Hair it has not seen: hair-synth's low tail at a seed outside the corpus's. Asked to be
   // surer than its least sure cluster, no cluster becomes surer, the same ones are decided
-  // by the criteria, and the log lists the unsure ones. (With session 14's models every
-  // cluster of this tail is sure to a full margin, 1.0, and ponytail01's least sure one is
-  // 0.9996; session 11's called the tail 0.61 sure, session 10's 0.42, and ponytail01's
-  // front crown was the unsure one of earlier models.)
+  // by the criteria, and the log lists the unsure ones.
   const fs::path data = directory() / "unseen";
   fs::create_directories(data);
   auto synth = run_command(kBin / "hair-synth",
@@ -542,8 +539,7 @@ TEST_F(ClassifyCli, AWovenBraidFromALooseCapIsBraidedUnderAFixedCap) {
   // for it): its lobes woven from four cards each, narrowing to half its width, its top
   // lifted off the head where a loose cap gathers, at a seed the shipped model was not
   // trained on. The braid is braided and the cap fixed, each on at least 80% of its
-  // strands (both classified so at seeds 7101-7103, loose or close, with the models of
-  // session 15; session 14's called this braid normal, as they called braid01's held out).
+  // strands (both are classified so at seeds 7101-7103, loose or close).
   hair::synth::HairStyleSpec spec = hair::synth::varied_spec(hair::synth::preset("braid"), 7101);
   hair::synth::ComponentSpec& braid = spec.components[0];
   braid.braid_cards_per_lobe = 4;

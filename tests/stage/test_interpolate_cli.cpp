@@ -248,7 +248,7 @@ TEST_F(InterpolateCli, AFrameRangeIsThoseFramesOfAFullRun) {
     EXPECT_TRUE(hair::read_frame_points(part_file, row) ==
                 hair::read_frame_points(whole_file, row + 5))
         << "row " << row;
-  // One frame (a still of frame 7; it crashed in the output's check until session 18).
+  // One frame (a still of frame 7): the output's check takes a one-frame range.
   fs::path one = directory() / "one.h5";
   run_stage("interpolate", {m.guides.string(), m.out.strands.string(), m.styles.string(),
                             "--frames", "7:8", "-o", one.string()});

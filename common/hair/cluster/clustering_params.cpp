@@ -80,4 +80,35 @@ void add_graph_clustering_params(ParamSet& params, GraphClusteringParams& values
   });
 }
 
+void declare_cluster_middle_params(ParamSet& p, GraphClusteringParams& params) {
+  add_graph_clustering_params(p, params);
+}
+
+void declare_cluster_all_params(ParamSet& p, HairClusteringParams& params) {
+  add_graph_clustering_params(p, params.graph);
+  p.add("similarity_distance_max_h", params.similarity.distance_max_h,
+                   "no edge between free-root groups whose roots or tips are this far apart, "
+                   "in H",
+                   ParamRange::above(0));
+  p.add("split_at_type_change", params.split_at_type_change,
+                   "divide a cluster where its root-type groups meet its other groups");
+  p.add(
+      "split_continued_roots", params.split_continued_roots,
+      "in that division, a root-type group whose start continues another group of "
+      "its cluster (within the connectivity bounds) goes with the distal part, which does "
+      "not start at the root (docs/clustering.md)");
+  p.add("continued_root_min_scalp_distance_h",
+                   params.continued_root_min_scalp_distance_h,
+                   "...when its centre strand starts at least this far from the scalp, in H",
+                   ParamRange::at_least(0));
+}
+
+void check_cluster_middle_params(const GraphClusteringParams& params) {
+  check_params(params, declare_cluster_middle_params);
+}
+
+void check_cluster_all_params(const HairClusteringParams& params) {
+  check_params(params, declare_cluster_all_params);
+}
+
 }  // namespace hair

@@ -5,6 +5,7 @@
 #include <map>
 #include <utility>
 
+#include "hair/cluster/clustering_params.h"
 #include "hair/core/error.h"
 
 namespace hair {
@@ -209,6 +210,7 @@ const char* cluster_count_source_name(ClusterCountSource source) {
 MiddleClustering cluster_middle_groups(const StrandSet& centres,
                                        const std::vector<GroupType>& types, double head_height_m,
                                        const GraphClusteringParams& params) {
+  check_cluster_middle_params(params);
   check_inputs(centres, types, head_height_m);
   MiddleClustering result;
   result.middle_cluster.assign(types.size(), -1);
@@ -260,6 +262,7 @@ HairClustering cluster_hair(const StrandSet& centres, const std::vector<GroupTyp
                             const std::vector<int32_t>& middle_cluster, double head_height_m,
                             const HairClusteringParams& params,
                             const std::vector<double>& start_scalp_distance_m) {
+  check_cluster_all_params(params);
   check_inputs(centres, types, head_height_m);
   if (!start_scalp_distance_m.empty() && start_scalp_distance_m.size() != types.size())
     throw Error::bad_input("", "scalp distances and types differ in group count");

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "hair/cluster/typeify_params.h"
 #include "hair/core/error.h"
 #include "hair/geom/point_index.h"
 #include "hair/geom/strand_geometry.h"
@@ -82,6 +83,7 @@ GroupTypes group_types(const StrandSet& strands, const std::vector<int32_t>& fir
 GroupTypes group_types_from_centres(StrandSet centres_in,
                                     std::vector<double> start_scalp_distance_m,
                                     double head_height_m, const TypeifyParams& params) {
+  check_typeify_params(params);
   auto group_count = static_cast<int64_t>(centres_in.strand_count());
   if (!start_scalp_distance_m.empty() &&
       start_scalp_distance_m.size() != static_cast<size_t>(group_count))

@@ -96,6 +96,8 @@ ParamSet::ParamSet(CLI::App& app)
   app.allow_config_extras(CLI::config_extras_mode::error);
 }
 
+ParamSet::ParamSet(CLI::App& app, ValuesUnchecked) : ParamSet(app) { defaults_checked_ = false; }
+
 void ParamSet::add(const std::string& name, double& value, const std::string& description,
                    ParamRange range) {
   check_default_in_range(name, value, range);
@@ -136,7 +138,8 @@ void ParamSet::add(const std::string& name, std::string& value, const std::strin
   if (allowed_words.empty()) {
     throw std::invalid_argument("parameter '" + name + "' has no allowed words");
   }
-  if (std::find(allowed_words.begin(), allowed_words.end(), value) == allowed_words.end()) {
+  if (defaults_checked_ &&
+      std::find(allowed_words.begin(), allowed_words.end(), value) == allowed_words.end()) {
     throw std::invalid_argument(fmt::format("default of parameter {} = {} is not one of: {}", name,
                                             quoted_text(value), joined(allowed_words)));
   }
@@ -155,8 +158,8 @@ ParamSet::Param& ParamSet::register_param(Param param) {
 }
 
 void ParamSet::check_default_in_range(const std::string& name, double value,
-                                      const ParamRange& range) {
-  if (!range.contains(value)) {
+                                      const ParamRange& range) const {
+  if (defaults_checked_ && !range.contains(value)) {
     throw std::invalid_argument(fmt::format("default of parameter {} = {} is out of range {}", name,
                                             value, range.to_string()));
   }
@@ -249,6 +252,27 @@ void ParamSet::check() const {
   for (const auto& check : checks_) {
     if (const std::optional<std::string> violation = check()) throw Error::usage(*violation);
   }
+}
+
+void ParamSet::check_values() const {
+  for (const auto& param : params_) {
+    // The value's shortest text reads back to the same value, so parse_into() leaves it
+    // as it is and refuses it with the command line's message.
+    const std::string text = std::visit(
+        [](auto* target) -> std::string {
+          using Target = std::remove_pointer_t<decltype(target)>;
+          if constexpr (std::is_same_v<Target, bool>) {
+            return *target ? "true" : "false";
+          } else if constexpr (std::is_same_v<Target, std::string>) {
+            return *target;
+          } else {
+            return fmt::format("{}", *target);
+          }
+        },
+        param.value);
+    parse_into(param, text);
+  }
+  check();
 }
 
 nlohmann::ordered_json ParamSet::effective_json() const {

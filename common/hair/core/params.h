@@ -54,6 +54,10 @@ class ParamSet {
   /// Adds the group "Parameters" to `app` and makes `app` reject unknown keys in its
   /// config file (see parameter_file_error_line for the message).
   explicit ParamSet(CLI::App& app);
+  /// For check_params(): registering takes values outside their ranges, which
+  /// check_values() then refuses by name.
+  struct ValuesUnchecked {};
+  ParamSet(CLI::App& app, ValuesUnchecked);
   ParamSet(const ParamSet&) = delete;
   ParamSet& operator=(const ParamSet&) = delete;
 
@@ -76,6 +80,11 @@ class ParamSet {
 
   /// Runs the cross checks after parsing; throws hair::Error (usage) with the first message.
   void check() const;
+
+  /// Holds every bound value to its range or words, as if it had been read from the
+  /// command line, then runs the cross checks; throws hair::Error (usage) with the same
+  /// message a bad command-line value gets.
+  void check_values() const;
 
   /// {"name": value, ...} in registration order (for the provenance attribute).
   nlohmann::ordered_json effective_json() const;
@@ -100,8 +109,8 @@ class ParamSet {
   };
 
   Param& register_param(Param param);
-  static void check_default_in_range(const std::string& name, double value,
-                                     const ParamRange& range);
+  void check_default_in_range(const std::string& name, double value,
+                              const ParamRange& range) const;
   /// Adds the command-line option of `param`, the last one registered.
   void add_option(Param& param, const std::string& type_name, const std::string& default_text);
   void parse_into(const Param& param, const std::string& text) const;
@@ -111,9 +120,24 @@ class ParamSet {
   std::string help_text(const Param& param) const;
 
   CLI::App* group_;
+  bool defaults_checked_ = true;
   std::vector<Param> params_;
   std::vector<std::function<std::optional<std::string>()>> checks_;
 };
+
+/// Checks `values` as a stage's command line checks them: `declare` (a stage's
+/// declare_*_params) registers a copy of them with their ranges, words and cross checks,
+/// and every value is held to them. A library entry point calls it, so that what a
+/// caller sets in code meets the bounds a user's command line does. Throws hair::Error
+/// (usage), e.g. "parameter step_h = 0.5 is out of range [0.001, 0.1]".
+template <typename Values>
+void check_params(const Values& values, void (*declare)(ParamSet&, Values&)) {
+  Values copy = values;
+  CLI::App app;
+  ParamSet params(app, ParamSet::ValuesUnchecked{});
+  declare(params, copy);
+  params.check_values();
+}
 
 /// The one-line message for a CLI11 error raised while reading the parameter file at
 /// `params_path`: an unknown key becomes "unknown parameter 'foo' in params.toml", a

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "hair/core/error.h"
+#include "hair/extract/extract_params.h"
 #include "hair/extract/group_sense.h"
 #include "hair/extract/painted_streamlines.h"
 #include "hair/extract/rail_paint.h"
@@ -1172,6 +1173,7 @@ void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>&
 ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
                               const std::string& hair_file, const std::string& body_file,
                               const PaintedTextures& textures) {
+  check_extract_params(params);
   ExtractResult result;
   MeshCleanup cleanup = clean_mesh(hair_mesh, hair_file);
   clean_mesh(body_mesh, body_file);

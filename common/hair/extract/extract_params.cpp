@@ -133,4 +133,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              ParamRange::closed(0, 1));
 }
 
+void check_extract_params(const ExtractParams& params) {
+  ExtractStageParams stage;
+  stage.extract = params;
+  check_params(stage, declare_extract_params);
+}
+
 }  // namespace hair

@@ -21,4 +21,8 @@ struct ExtractStageParams {
 /// Registers every extract parameter with its description and range.
 void declare_extract_params(ParamSet& params, ExtractStageParams& values);
 
+/// Holds `params` to the ranges declare_extract_params() gives them (check_params());
+/// extract_strands() calls it. Throws hair::Error (usage) naming the first bad value.
+void check_extract_params(const ExtractParams& params);
+
 }  // namespace hair

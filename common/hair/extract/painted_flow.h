@@ -99,8 +99,8 @@ std::vector<int8_t> segments_along_painted_flow(const PolyMesh& mesh, const Pain
 /// the face's own group (`face_group`, one per face; their "group" strand attribute),
 /// with coherence 1. Where a face's group has no input strand, or without the groups, the
 /// nearest segment of any input strand. Faces with neither keep no flow. `input_strands`
-/// are extract's strands. (Until session 22 the nearest segment of any strand: where
-/// cards cross or stack, as short01's spikes on its cap, that is often another card's.)
+/// are extract's strands. (The nearest segment of any strand would often be another card's
+/// where cards cross or stack, as short01's spikes on its cap.)
 PaintedFlow flow_with_rails(const PolyMesh& mesh, const PaintedFlow& painted,
                             const StrandSet& input_strands, const std::vector<int32_t>& face_group,
                             double max_distance_m);

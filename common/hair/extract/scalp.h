@@ -69,8 +69,8 @@ struct ScalpParams {
 ///    cm off the nape, long hair) and is not rooted there;
 /// except the face (face_triangles()) and the ears (thin_triangles()). A fringe or a lock
 /// hanging over the eyes and cheeks lies within max_distance_m of them, and hair lying
-/// over an ear too, and hair is not rooted there (bob01, bob02: 7% of their strands grew
-/// from the face until session 22; each of the ten MakeHuman meshes 70-222 from the ears).
+/// over an ear too, and hair is not rooted there (counted on the face, bob01's and bob02's
+/// fringes would root 7% of their strands there).
 /// Deterministic whatever the thread count.
 std::vector<uint8_t> scalp_triangles(const Points3f& body_vertices,
                                      const Triangles3i& body_triangles, const PolyMesh& hair_mesh,

@@ -18,6 +18,7 @@
 #include "hair/geom/point_index.h"
 #include "hair/geom/triangle_mesh_distance.h"
 #include "hair/grow/card_surfaces.h"
+#include "hair/grow/grow_params.h"
 #include "hair/grow/orientation_field.h"
 #include "hair/grow/painted_field_seeds.h"
 #include "hair/grow/shell_field_seeds.h"
@@ -1141,8 +1142,7 @@ StrandSet field_paint_seeds(const GrowInput& input, const GrowingContext& contex
 /// hair the mesh shows ends on the scalp: a cap's streamlines at the hairline, 93-100% of
 /// such roots on short01, short02, bob01, afro01), less any part into the scalp (`normal`,
 /// unit, outward), so it lies along the hair as the hair's ends there do; along the normal
-/// where the strand runs straight into the scalp (until session 22 always: a stub standing
-/// up out of the scalp).
+/// where the strand runs straight into the scalp.
 Vec3 stub_direction(const StrandSet& strands, int32_t strand, int64_t row, const Vec3& normal) {
   const int64_t first = strands.offsets[static_cast<size_t>(strand)];
   const int64_t last = strands.offsets[static_cast<size_t>(strand) + 1] - 1;
@@ -1174,6 +1174,7 @@ Vec3 along_paint(const Vec3& direction, const Vec3& normal, const std::optional<
 }  // namespace
 
 GrowResult grow_strands(const GrowInput& input, const GrowParams& params) {
+  check_grow_params(params);
   const double h = input.head_height_m;
   if (!(h > 0)) throw Error::bad_input(input.source, "head height is not positive");
   if (input.input_strands.strand_count() == 0)

@@ -11,6 +11,7 @@
 #include "hair/geom/barycentric.h"
 #include "hair/geom/point_index.h"
 #include "hair/interp/interpolation_kernel.h"
+#include "hair/interp/interpolation_params.h"
 #include "hair/style/hair_style.h"
 
 namespace hair {
@@ -24,27 +25,6 @@ using Vec3 = Eigen::Vector3d;
 constexpr int kColumns = 8;
 static_assert(kColumns * 4 == kParticleFloats);
 using Column = Eigen::Array4f;
-
-void check_params(const InterpolationParams& p) {
-  if (p.candidate_guides < 3)
-    throw Error::usage("candidate_guides must be at least 3, not " +
-                       std::to_string(p.candidate_guides));
-  if (!(p.min_direction_cosine >= -1 && p.min_direction_cosine <= 1))
-    throw Error::usage("min_direction_cosine must be within [-1, 1], not " +
-                       std::to_string(p.min_direction_cosine));
-  if (!(p.min_triangle_aspect >= 0 && p.min_triangle_aspect <= 1))
-    throw Error::usage("min_triangle_aspect must be within [0, 1], not " +
-                       std::to_string(p.min_triangle_aspect));
-  if (!(p.min_guide_length_ratio >= 0 && p.min_guide_length_ratio <= 1))
-    throw Error::usage("min_guide_length_ratio must be within [0, 1], not " +
-                       std::to_string(p.min_guide_length_ratio));
-  if (!(p.wisp_bridge_length_m >= 0 && p.wisp_bridge_length_m <= 1))
-    throw Error::usage("wisp_bridge_length_m must be within [0, 1], not " +
-                       std::to_string(p.wisp_bridge_length_m));
-  if (!(p.wisp_seam_length_m >= 0 && p.wisp_seam_length_m <= 1))
-    throw Error::usage("wisp_seam_length_m must be within [0, 1], not " +
-                       std::to_string(p.wisp_seam_length_m));
-}
 
 /// Smallest height of triangle (a, b, c) over its longest edge.
 double triangle_aspect(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -492,7 +472,7 @@ const char* interpolation_method_name(InterpolationMethod method) {
 
 StrandBinding bind_strands(const StrandSet& strands, const InterpolationGuides& guides,
                            const InterpolationParams& params) {
-  check_params(params);
+  check_interpolation_params(params);
   const auto& point_cluster =
       std::get<std::vector<int32_t>>(strands.point_attributes.at("cluster"));
   const int64_t strand_count = strands.strand_count();

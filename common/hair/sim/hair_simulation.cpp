@@ -9,6 +9,7 @@
 
 #include "hair/core/error.h"
 #include "hair/sim/simulation_loop.h"
+#include "hair/sim/simulation_params.h"
 #include "hair/sim/simulation_setup.h"
 
 namespace hair {
@@ -16,32 +17,11 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-void check_params(const SimulationParams& p) {
-  auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw Error::usage(what);
-  };
-  require(p.fps > 0 && std::isfinite(p.fps), "fps must be positive");
-  require(p.duration_s >= 0 && std::isfinite(p.duration_s), "duration_s must be 0 or positive");
-  require(p.substeps >= 1, "substeps must be at least 1");
-  require(p.guide_count >= 0, "guide_count must be 0 or more");
-  require(p.segment_length_h > 0, "segment_length_h must be positive");
-  require(p.short_segment_factor > 0 && p.wisp_segment_factor > 0,
-          "segment factors must be positive");
-  const HairFibre& fibre = p.material.fibre;
-  require(fibre.youngs_modulus_pa > 0 && fibre.shear_modulus_pa > 0,
-          "youngs_modulus_pa and shear_modulus_pa must be positive");
-  require(fibre.radius_m > 0 && fibre.density_kg_m3 > 0,
-          "hair_radius_m and hair_density_kg_m3 must be positive");
-  require(p.material.fibres_per_strand >= 1, "fibres_per_guide must be at least 1");
-  require(p.material.lock_cohesion >= 0 && p.material.lock_cohesion <= 1,
-          "lock_cohesion must be within 0 and 1");
-  require(p.material.stiffness_scale > 0, "stiffness_scale must be positive");
-  require(p.material.stretch_frequency_hz > 0, "stretch_frequency_hz must be positive");
-  require(p.body_voxel_h > 0 && p.body_clearance_h >= 0, "body field spacing must be positive");
-  require(p.density_cell_h > 0, "density_cell_h must be positive");
-  require(p.bundle_cohesion_per_s2 >= 0, "bundle_cohesion_per_s2 must be 0 or positive");
-  require(p.bundle_damping_ratio >= 0, "bundle_damping_ratio must be 0 or positive");
-  require(p.repulsion_interval_frames >= 1, "repulsion_interval_frames must be at least 1");
+/// Holds `p` to the ranges the simulate stage declares (declare_simulation_params()).
+void check_declared_params(const SimulationParams& p) {
+  SimulateStageParams stage;
+  stage.simulation = p;
+  check_params(stage, declare_simulation_params);
 }
 
 }  // namespace
@@ -62,7 +42,7 @@ Vec3 head_pivot(const Points3f& body_vertices, double head_height_m) {
 
 SimulationResult simulate_hair(const SimulationScene& scene, const HeadMotion& motion,
                                const SimulationParams& params) {
-  check_params(params);
+  check_declared_params(params);
   check_strand_set(scene.strands, 1);  // names a strand with a non-finite point
   auto setup_start = std::chrono::steady_clock::now();
   SimulationResult result;

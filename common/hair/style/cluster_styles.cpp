@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "hair/core/error.h"
+#include "hair/style/classify_params.h"
 #include "hair/style/hair_style.h"
 #include "hair/style/puk_svm.h"
 #include "hair/style/random_forest.h"
@@ -37,6 +38,7 @@ double svm_margin_confidence(const PukSvm& svm, std::span<const double> decision
 
 ClusterStyles cluster_styles(const StyleFeatures& features, const StyleModel& model,
                              StyleClassifierKind classifier, const DecisiveStyleRules& rules) {
+  check_decisive_rules_params(rules);
   const Eigen::MatrixXd& rows = feature_set_rows(features, model.feature_set);
   if (model.feature_names != feature_set_names(model.feature_set))
     throw Error::usage("the style model's '" + model.feature_set +

@@ -277,3 +277,41 @@ TEST(ParamRange, TextAndMembership) {
 }
 
 }  // namespace
+
+namespace {
+
+void declare_example(hair::ParamSet& params, ExampleParams& values) { values.bind(params); }
+
+std::string check_message(const ExampleParams& values) {
+  try {
+    hair::check_params(values, declare_example);
+  } catch (const hair::Error& error) {
+    EXPECT_EQ(error.kind(), hair::ErrorKind::usage);
+    return error.what();
+  }
+  return "";
+}
+
+TEST(CheckParams, ValuesSetInCodeMeetTheCommandLinesBounds) {
+  // What a library caller sets is refused as a user's command line would be, by name.
+  EXPECT_EQ(check_message(ExampleParams{}), "");
+  ExampleParams values;
+  values.k1 = 1.5;
+  EXPECT_EQ(check_message(values), "parameter k1 = 1.5 is out of range [0, 1]");
+  values = {};
+  values.iterations = 0;
+  EXPECT_EQ(check_message(values), "parameter iterations = 0 is out of range [1, inf)");
+  values = {};
+  values.spacing_m = std::nanf("");
+  EXPECT_NE(check_message(values).find("spacing_m"), std::string::npos);
+  values = {};
+  values.eigensolver = "lapack";
+  EXPECT_EQ(check_message(values), "parameter eigensolver = \"lapack\" is not one of: spectra, dense");
+  // The values checked are left as they are (a copy is declared).
+  values = {};
+  values.k1 = 0.1;
+  EXPECT_EQ(check_message(values), "");
+  EXPECT_EQ(values.k1, 0.1);
+}
+
+}  // namespace

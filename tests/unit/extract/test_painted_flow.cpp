@@ -215,7 +215,7 @@ TEST(PaintedFlowRails, AFaceWithoutClearPaintIsJudgedAgainstItsOwnRails) {
     EXPECT_GT(std::abs(flow.direction[face].x()), 0.99f) << "face " << face;
   }
   for (size_t face : {2u, 3u}) EXPECT_GT(std::abs(flow.direction[face].y()), 0.99f);
-  // By the nearest rail of any group, as before session 22, A's first face took B's.
+  // By the nearest rail of any group, A's first face takes B's.
   const PaintedFlow any = flow_with_rails(mesh, unpainted, rails, {}, 0.05);
   EXPECT_GT(std::abs(any.direction[0].y()), 0.99f);
   // Clear paint stays; a group without rails takes the nearest of any.

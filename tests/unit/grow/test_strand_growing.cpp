@@ -1343,8 +1343,7 @@ TEST(StrandGrowing, StrandsEndWhereTheirCardDivesIntoTheBody) {
 // A cap's rails that end over the scalp (a traced cap's streamlines at its hairline, 4 mm
 // over the head): a root beyond their tips has a tip as its reference and cannot leave it.
 // Its one step lies along the hair there, down the head as the rails end, not standing
-// straight up out of the scalp as before session 22 (10-20% of short01's, short02's, bob01's
-// and afro01's strands).
+// straight up out of the scalp.
 TEST(StrandGrowing, AStrandThatCannotLeaveItsRootLiesAlongTheHairThere) {
   GrowInput input = head_sphere_input("sphere");
   std::vector<Points3f> rails;

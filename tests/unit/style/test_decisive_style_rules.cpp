@@ -66,7 +66,7 @@ TEST(DecisiveStyleRules, ACapGatheredIntoABandAndGoingOnIsFixed) {
   EXPECT_FALSE(decisive_style(spread, rules));
 }
 
-/// bob02's main cluster (session 13's corpus): from the roots, hanging to the jaw and ending
+/// bob02's main cluster: from the roots, hanging to the jaw and ending
 /// there, its ends as spread as the rest.
 PaperFeatures hanging_from_the_roots() {
   PaperFeatures features;
