@@ -167,7 +167,7 @@ def main():
            f"Measured {datetime.date.today().isoformat()} at commit {args.commit} on {args.machine}, by",
            f"`{args.command}` (bench/corpus/README.md says what the corpus holds, where each",
            "mesh comes from and how the halves are drawn). Distances in head heights H; the",
-           "columns are hair-grow-report's (docs/grow.md, \"Along the painted flow\").",
+           "columns are hair-grow-report's (docs/grow.md, \"Figures\").",
            ""]
     for half in ("tune", "check"):
         part = [r for r in rows if r["half"] == half]
