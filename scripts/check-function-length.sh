@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Checks that no function of libhair is longer than a reader can hold in their head:
 # every function (and member function) in common/hair is at most MAX_LINES lines from
-# its signature to its closing brace (default 200; common/hair/README.md). Reads the
+# its signature to its closing brace (default 120; common/hair/README.md). Reads the
 # functions' extents with Universal Ctags (Debian universal-ctags).
 #
 #   scripts/check-function-length.sh [LIBHAIR_DIR] [MAX_LINES]
@@ -11,7 +11,7 @@
 set -euo pipefail
 
 root=${1:-"$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/common/hair"}
-max_lines=${2:-200}
+max_lines=${2:-120}
 if ! ctags --version 2>/dev/null | grep -q "Universal Ctags"; then
   echo "check-function-length: needs Universal Ctags (apt-get install universal-ctags)" >&2
   exit 2

@@ -276,11 +276,17 @@ Handle File::open_object(const std::string& path) const {
   return object;
 }
 
+void File::flush() const {
+  if (!writable_ || !file_.valid() || H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0) return;
+  const std::string message = with_hdf5_message("cannot write HDF5 file");
+  if (message.find("No space left on device") != std::string::npos)
+    throw Error::runtime(name_, "cannot write HDF5 file: no space left on device");
+  throw Error::runtime(name_, message);
+}
+
 void File::close() {
   if (!file_.valid()) return;
-  if (writable_ && H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) {
-    throw Error::runtime(name_, with_hdf5_message("cannot flush HDF5 file"));
-  }
+  flush();
   if (!file_.close()) throw Error::runtime(name_, with_hdf5_message("cannot close HDF5 file"));
 }
 

@@ -82,6 +82,12 @@ class File {
   /// bad_input if it is missing.
   Handle open_object(const std::string& path) const;
 
+  /// Writes what HDF5 holds in memory to the file (a file opened to write); throws a
+  /// runtime error if it cannot ("no space left on device" where the disk is full).
+  /// HDF5 keeps small datasets and metadata in memory until then, so a write into a full
+  /// file system fails here, not where the dataset was written.
+  void flush() const;
+
   /// Flushes and closes the file, throwing a runtime error if HDF5 cannot; call before
   /// committing an output. Further use of the File is an error.
   void close();

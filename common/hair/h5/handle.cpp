@@ -28,7 +28,12 @@ bool Handle::close() {
 
 void silence_hdf5_error_printing() {
   static std::once_flag once;
-  std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+  std::call_once(once, [] {
+    // Every file is closed by its owner. HDF5's own clean-up at exit would close again a
+    // file whose flush failed (a full disk), and crashes in HDF5 1.10 doing so.
+    H5dont_atexit();
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  });
 }
 
 namespace {

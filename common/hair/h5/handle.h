@@ -31,8 +31,9 @@ class Handle {
   Closer closer_ = nullptr;
 };
 
-/// Turns off HDF5's automatic printing of its error stack (once per process); every
-/// failure is reported through hair::Error instead.
+/// Turns off HDF5's automatic printing of its error stack, and its clean-up at exit (once
+/// per process, before any other HDF5 call); every failure is reported through
+/// hair::Error instead, and every file is closed by its owner.
 void silence_hdf5_error_printing();
 
 /// `reason` followed by the innermost message of HDF5's error stack in parentheses

@@ -372,6 +372,7 @@ void write_schema_attributes(File& file, const Schema& schema) {
 }
 
 void require_valid_output(const File& file, std::string_view schema_name) {
+  file.flush();  // judged as it is on disk; a full disk is said as such
   const std::optional<Error> violation = first_violation(file, Schema::find(schema_name));
   if (violation) {
     throw Error(ErrorKind::runtime, violation->file(), violation->dataset(),
