@@ -88,17 +88,17 @@ struct HairClusteringParams {
   /// of its cluster (a connection within the connectivity bounds joins that group's end to
   /// this group's start) goes with the distal part: typeify found nothing within its reach
   /// (0.08 H) before it, but at this level's reach (f1_max) it continues a chain, so it does
-  /// not start at the root. braid01: one braid stream, whose strips start 0.16 H below the
-  /// cap groups that run into it, is typed root_connected and stays with the cap without
+  /// not start at the root. A braid whose strips start well below the cap groups that run
+  /// into it (braid01's) is typed root_connected and would stay with the cap without
   /// this. grow roots no strand at such a group (its cluster does not start at the root)
   /// and reaches it across the gap (GrowParams::continued_root_radius_h).
   bool split_continued_roots = true;
   /// ...but only a group whose centre strand starts at least this far from the scalp
   /// (types.h5 /groups/start_scalp_distance_m), in H: groups that start on the scalp
   /// beside one another (a crown, the two sides of a parting) line up as well as a
-  /// continuation does. braid01's continued strips start 0.066-0.117 H from the scalp,
-  /// its cap groups within 0.028 H; of the synthetic corpus's true first pieces typed
-  /// root, 64 of 66 start within 0.04 H.
+  /// continuation does. A braid's continued strips start farther from the scalp than its
+  /// cap groups, and hair-synth's true first pieces typed root nearly all start within
+  /// 0.04 H (docs/clustering.md).
   double continued_root_min_scalp_distance_h = 0.05;
 };
 

@@ -28,10 +28,10 @@ struct TypeifyParams {
   /// of H) counts as before it only the groups whose centre strand ends near its start:
   /// a card rooted on the scalp under another card's lower half is a root, not that
   /// card's continuation. 0, the default, leaves the paper's Algorithm 1 as written:
-  /// the rule types the training corpus's root cards far better (1,710 of 4,826 missed
-  /// become 538 at 0.05 H, cluster-all's bound for starting on the scalp), but the style
-  /// classifier trained on what it yields holds out worse on the real meshes, and
-  /// braid01's braid strips turn into roots (docs/typeify.md).
+  /// the rule types the training corpus's root cards far better (at 0.05 H, cluster-all's
+  /// bound for starting on the scalp), but the style classifier trained on what it yields
+  /// holds out worse on the real meshes, and a braid's strips after its band turn into
+  /// roots (docs/typeify.md).
   double root_scalp_distance_h = 0.0;
   /// The angle, in degrees, under which a root group's distal direction and a nearby
   /// group's proximal direction count as one flow; 0 takes it from the distribution

@@ -3,9 +3,8 @@
 // flows smoothly across it. A strand that runs against the others of its group over its
 // length was oriented wrongly on its own (a rail whose region was decided by a rule that
 // read the other rails right, a streamline turned by a vote at one of its ends) and is
-// turned round. long01's cap has two such rails among its 27, running from the nape up to
-// the crown, and a strand grown along one of them went down the back and came up again;
-// bob01's side card has two among its 28.
+// turned round: a cap's rail read from the nape up to the crown among rails that run down
+// would grow a strand down the back and up again.
 
 #include <cstdint>
 #include <span>

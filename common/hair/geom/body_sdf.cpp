@@ -663,8 +663,8 @@ bool BodySdf::push_out(Eigen::Vector3d& point_m, double clearance_m) const {
     if (!(norm > 1e-6)) break;
     // Newton's step for distance(p) = target along the gradient, where the field is a
     // distance (|g| near 1). Where |g| is small, between two close surfaces (inside an
-    // ear) or at a kink, Newton's step grows as 1 / |g| without bound: ponytail01 had a
-    // grown point thrown 0.12 m off the ear. The step is held to twice what is missing.
+    // ear) or at a kink, Newton's step grows as 1 / |g| without bound and throws the point
+    // far off the ear. The step is held to twice what is missing.
     point_m += (g / norm) * ((target_m - distance_m) / std::max(norm, kPushOutMinGradient));
     moved = true;
   }

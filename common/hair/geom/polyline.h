@@ -1,10 +1,13 @@
 #pragma once
-// Points along a polyline by arc length.
+// A polyline's arc length, and points along it by arc length.
 
 #include <Eigen/Core>
 #include <vector>
 
 namespace hair {
+
+/// The polyline's length: the sum of its segments' lengths (0 for fewer than two points).
+double polyline_length(const std::vector<Eigen::Vector3d>& points);
 
 /// The point at `fraction` (0 the first point, 1 the last, clamped) of the arc length of
 /// the polyline `points` (at least one point); the first point if it has no length.

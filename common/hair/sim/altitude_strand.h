@@ -132,7 +132,7 @@ RobustAltitudes robust_altitudes(const std::array<Eigen::Vector3d, 4>& x);
 /// to half each when they tie: the spring changes smoothly as they trade places (Selle et
 /// al.'s single choice jumps, and two nearly equal altitudes took turns step after step,
 /// a chatter that never came to rest). 3%: a cantilever within 10% of Euler-Bernoulli
-/// in every direction; 10% did no better and cost long01 a tenth more time per frame.
+/// in every direction; 10% does no better and costs a tenth more time per frame.
 constexpr double kAltitudeBlendFactor = 1.03;
 /// The second altitude's share of the spring for robustness ratio second / best.
 double second_altitude_share(double robustness_ratio);

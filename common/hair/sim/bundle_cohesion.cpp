@@ -19,8 +19,8 @@ constexpr double kGatheredSpreadRatio = 0.6;
 /// Or where they pass, each somewhere along its length, this close to one point (their
 /// waist) against their spread at the roots: strands of different lengths drawn through
 /// one band (a low tail from the whole scalp), which meet it at different arc fractions.
-/// Loose hair hanging side by side does not converge (long01's long layer: 1.13; a
-/// tail's: 0.14 to 0.25; docs/simulate.md).
+/// Loose hair hanging side by side does not converge (its ratio stays near 1, a tail's
+/// lies well under this; docs/simulate.md).
 constexpr double kWaistSpreadRatio = 0.4;
 
 /// Each hair particle's arc fraction along its strand (equal arcs: i / (n - 1)).

@@ -95,8 +95,8 @@ class BundleCohesion {
   /// A strand guide in no bundle whose lower three quarters lie, as a root mean square of
   /// their rest offsets from a bundle's centre line, no farther out than the bundle's
   /// widest member's follows that bundle (the nearest such): a cluster too small to be a
-  /// bundle of its own, hanging in a tail (ponytail01's one guide of 66 strands beside its
-  /// tail, which swung alone to the other shoulder).
+  /// bundle of its own, hanging in a tail (one guide of a small cluster beside a tail would
+  /// swing alone to the other shoulder).
   void add_followers(const std::vector<SimulatedGuide>& guides,
                      const std::vector<RunningStrand>& running);
 

@@ -35,8 +35,8 @@ DriftSummary summarise_drift(const std::vector<GuideDrift>& drift);
 /// head's frame) over that at rest. Only the guides at least half as long as the
 /// cluster's median guide count: a stub of the cluster that ends by the scalp is not in
 /// the tail, and its point, far from the tail's, would swell the rest spread and so hide
-/// the tail's fanning out (ponytail01's three stubs of 0.5-5 cm made its 20 mm at rest
-/// read 33 mm and its worst frame 1.23 for 1.59).
+/// the tail's fanning out (a few stubs of a few centimetres by the nape swell a tail's
+/// rest spread by half).
 struct BundleSpread {
   int32_t cluster = -1;
   int64_t guides = 0;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "hair/core/error.h"
+#include "hair/geom/polyline.h"
 #include "hair/sim/body_collider.h"
 #include "hair/sim/sag_free_rest.h"
 #include "hair/sim/wisp_gathering.h"
@@ -45,12 +46,6 @@ std::vector<Vec3> resample_polyline(const std::vector<Vec3>& points, int segment
   resampled.front() = points.front();
   resampled.back() = points.back();
   return resampled;
-}
-
-double polyline_length(const std::vector<Vec3>& points) {
-  double length = 0;
-  for (size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
-  return length;
 }
 
 int segments_for(double length_m, double spacing_m) {
