@@ -85,12 +85,11 @@ struct ExtractParams {
   /// shell 2-4 cm off the back of the head is rooted all over the scalp under it), except
   /// where the triangle faces forward (normal's +Z above 0.5: hair hanging over the face is
   /// rooted above it). 0: only the distance decides. 0.15 (hair up to 0.18 H, 4.3 cm, out):
-  /// bob01's shell stands 0.11-0.15 H off the upper back along the scalp's normal.
+  /// a bob's shell stands up to 0.15 H off the upper back along the scalp's normal.
   double scalp_under_hair_h = 0.15;
   /// ...on triangles at least this far above the neck (H). Lower, at the bottom of the nape
-  /// and under the ears, hair standing off the head hangs past it from above: ponytail01's
-  /// tail hangs 2-4 cm off the nape 0.04-0.12 H above the neck, where the mesh has no hair
-  /// on the head.
+  /// and under the ears, hair standing off the head hangs past it from above: a tail hangs
+  /// 2-4 cm off the nape there, where the mesh has no hair on the head.
   double scalp_under_hair_min_height_h = 0.1;
   /// The face is never scalp: below this far under the crown (H; 0.4: the eyes of the
   /// MakeHuman body lie 0.47-0.56 H under it), where the body round a triangle faces
@@ -129,7 +128,7 @@ struct ExtractStats {
   int64_t paint_overruled_ids = 0;
   /// Regions continuation decided whose paint said the other way twice over (the same
   /// test), turned after continuation: continuation still runs from the regions as they
-  /// were, since on layered cards it carries a reading on too far (bob01).
+  /// were, since on layered cards it carries a reading on too far.
   int64_t paint_overruled_continuation = 0;
   /// Regions off the head decided by one cue (their vertex ids with the head distance
   /// silent, or their head distance against their ids), turned because the hair running

@@ -1,8 +1,12 @@
 #include "hair/extract/extract_params.h"
 
 namespace hair {
+namespace {
 
-void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
+/// How the meshes are read and their triangles paired into quads, how a region's rails are
+/// chosen (chain length, the painted flow), which patches are traced along their paint,
+/// and the alpha fade that tells root from tip.
+void declare_reading_and_paint_params(ParamSet& params, ExtractStageParams& values) {
   ExtractParams& p = values.extract;
   params.add("unit_scale", p.unit_scale,
              "metres per unit of the source meshes (MakeHuman: decimetres, 0.1)",
@@ -55,6 +59,11 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "...or mean fall along a whole rail, end to end (0 to 1), from which it does too "
              "(rails of many small faces fade by little per face)",
              ParamRange::above(0));
+}
+
+/// The rails kept, the cues that decide their direction, continuation and the parting of
+/// draped and folded rails.
+void declare_orientation_params(ParamSet& params, ExtractParams& p) {
   params.add("min_rail_length_share", p.min_rail_length_share,
              "along-chains shorter than this share of their region's longest are dropped "
              "as fragments",
@@ -98,6 +107,10 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
              "...each side falls away from that point by this share of its length...", ParamRange::closed(0, 1));
   params.add("parting_min_end_distance_h", p.parting_min_end_distance_h,
              "...and the tips (draped ends, a fold) hang off the head by this distance, in H", ParamRange::at_least(0));
+}
+
+/// The scalp, and how the painted flow is read off the mesh's textures.
+void declare_scalp_and_flow_params(ParamSet& params, ExtractParams& p) {
   params.add("scalp_distance_h", p.scalp_distance_h,
              "body triangles above the neck within this distance of the hair mesh, in H, "
              "form the scalp",
@@ -131,6 +144,14 @@ void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
   params.add("flow_min_painted_share", p.painted_flow.min_painted_share,
              "painted flow: share of a face's samples that must be painted for it to have a flow",
              ParamRange::closed(0, 1));
+}
+
+}  // namespace
+
+void declare_extract_params(ParamSet& params, ExtractStageParams& values) {
+  declare_reading_and_paint_params(params, values);
+  declare_orientation_params(params, values.extract);
+  declare_scalp_and_flow_params(params, values.extract);
 }
 
 void check_extract_params(const ExtractParams& params) {

@@ -78,7 +78,7 @@ struct OrientationDecision {
 /// if `whole_rails_count`, of `alpha_fade_min_rail_fall` along a whole rail (a tube or a
 /// finely cut card fades by little per face however clearly its paint fades to the tips).
 /// The fade alone (rule 3b below) asks the fall per face; where the texture's v convention
-/// backs it (paint over vertex ids, extract.cpp), the fall along the rail is enough.
+/// backs it (paint over vertex ids, region_orientation.cpp), the fall along the rail is enough.
 bool alpha_fade_decides(const OrientationEvidence& evidence,
                         const OrientationThresholds& thresholds, bool whole_rails_count);
 
@@ -92,7 +92,7 @@ bool alpha_fade_decides(const OrientationEvidence& evidence,
 ///     decisive height slope goes, against the ids, the height decides (hair lying down
 ///     the side of the head, numbered tip to root);
 ///  2. else a decisive head-distance slope decides (scalp_distance);
-///  3. (continuation is decided between passes, from the neighbours: see extract.cpp)
+///  3. (continuation is decided between passes, from the neighbours: see continuation.cpp)
 ///  3b. else a decisive fade of the painted alpha: the tips are where it fades (alpha_fade);
 ///     after continuation, because a patch's paint may fade towards where it meets the
 ///     next patch (a cap's cards into a ponytail's band) rather than towards the tips;

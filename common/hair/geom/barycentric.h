@@ -1,7 +1,7 @@
 #pragma once
 // Barycentric coordinates on a triangle, shared by the altitude springs
 // (altitude_strand.cpp: the foot of a point-face altitude) and the interpolation of
-// strands from three guides (strand_interpolation.cpp).
+// strands from three guides (interp/guide_choice.cpp).
 
 #include <Eigen/Core>
 #include <array>

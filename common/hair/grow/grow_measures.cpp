@@ -40,21 +40,15 @@ double unit_draw(std::mt19937_64& random) {
   return static_cast<double>(random() >> 11) * 0x1.0p-53;
 }
 
-}  // namespace
+/// Points on a triangle mesh, each with the triangle it lies on.
+struct MeshSamples {
+  std::vector<Vec3> points;
+  std::vector<Eigen::Index> triangle;
+};
 
-GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_vertices,
-                                   const Triangles3i& hair_triangles, const Points3f& body_vertices,
-                                   const Triangles3i& body_triangles,
-                                   const std::vector<uint8_t>& scalp_triangle, double head_height_m,
-                                   int64_t mesh_sample_count,
-                                   const std::vector<int32_t>& hair_triangle_group) {
-  if (grown.strand_count() == 0 || hair_triangles.rows() == 0 || body_triangles.rows() == 0)
-    throw Error::usage("measure_grown_strands: nothing to measure");
-  const double h = head_height_m;
-  GrowMeasures measures;
-
-  // Coverage: mesh samples to the nearest grown segment. Candidate segments are those
-  // ending at the grown points nearest each sample.
+/// `count` points drawn uniformly by area over the hair mesh, from a fixed seed.
+MeshSamples sample_hair_mesh(const Points3f& hair_vertices, const Triangles3i& hair_triangles,
+                             int64_t count) {
   std::vector<double> area(static_cast<size_t>(hair_triangles.rows()));
   double total_area = 0;
   for (Eigen::Index t = 0; t < hair_triangles.rows(); ++t) {
@@ -65,8 +59,11 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
     area[static_cast<size_t>(t)] = total_area;
   }
   std::mt19937_64 random(1);
-  std::vector<Vec3> samples(static_cast<size_t>(mesh_sample_count));
-  std::vector<Eigen::Index> sample_triangle(samples.size());
+  MeshSamples mesh_samples;
+  std::vector<Vec3>& samples = mesh_samples.points;
+  std::vector<Eigen::Index>& sample_triangle = mesh_samples.triangle;
+  samples.resize(static_cast<size_t>(count));
+  sample_triangle.resize(samples.size());
   for (size_t i = 0; i < samples.size(); ++i) {
     Vec3& sample = samples[i];
     double pick = unit_draw(random) * total_area;
@@ -84,7 +81,13 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
     sample = a + u * (b - a) + v * (c - a);
     sample_triangle[i] = t;
   }
-  measures.mesh_samples = mesh_sample_count;
+  return mesh_samples;
+}
+
+/// Per sample, its distance in H to the nearest grown strand segment. Candidate segments
+/// are those ending at the grown points nearest each sample.
+std::vector<double> coverage_h(const StrandSet& grown, const std::vector<Vec3>& samples,
+                               double h) {
   PointIndex grown_index(grown.points);
   std::vector<int64_t> point_strand(static_cast<size_t>(grown.point_count()));
   for (int64_t s = 0; s < grown.strand_count(); ++s)
@@ -105,27 +108,40 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
     }
     coverage[i] = best / h;
   }
-  if (hair_triangle_group.size() == static_cast<size_t>(hair_triangles.rows())) {
-    std::map<int32_t, std::pair<double, int64_t>> by_group;  // sum, count
-    for (size_t i = 0; i < samples.size(); ++i) {
-      auto& [sum, count] = by_group[hair_triangle_group[static_cast<size_t>(sample_triangle[i])]];
-      sum += coverage[i];
-      ++count;
-    }
-    for (const auto& [group, sum_count] : by_group) {
-      const auto& [sum, count] = sum_count;
-      if (count < GrowMeasures::kMinGroupSamples) continue;
-      const double mean = sum / static_cast<double>(count);
-      if (measures.worst_group < 0 || mean > measures.worst_group_coverage_mean_h) {
-        measures.worst_group = group;
-        measures.worst_group_coverage_mean_h = mean;
-        measures.worst_group_samples = count;
-      }
+  return coverage;
+}
+
+/// The worst group's coverage into `measures` (GrowMeasures::worst_group): `coverage` per
+/// sample, `sample_triangle` the hair triangle of each, `hair_triangle_group` the group of
+/// each triangle.
+void measure_worst_group(const std::vector<double>& coverage,
+                         const std::vector<Eigen::Index>& sample_triangle,
+                         const std::vector<int32_t>& hair_triangle_group,
+                         GrowMeasures& measures) {
+  std::map<int32_t, std::pair<double, int64_t>> by_group;  // sum, count
+  for (size_t i = 0; i < coverage.size(); ++i) {
+    auto& [sum, count] = by_group[hair_triangle_group[static_cast<size_t>(sample_triangle[i])]];
+    sum += coverage[i];
+    ++count;
+  }
+  for (const auto& [group, sum_count] : by_group) {
+    const auto& [sum, count] = sum_count;
+    if (count < GrowMeasures::kMinGroupSamples) continue;
+    const double mean = sum / static_cast<double>(count);
+    if (measures.worst_group < 0 || mean > measures.worst_group_coverage_mean_h) {
+      measures.worst_group = group;
+      measures.worst_group_coverage_mean_h = mean;
+      measures.worst_group_samples = count;
     }
   }
-  std::tie(measures.coverage_mean_h, measures.coverage_p95_h) = mean_and_p95(coverage);
+}
 
-  // Fidelity and the body: every grown point but the roots.
+/// Fidelity and the body into `measures`: every grown point but the roots, to the hair
+/// mesh and on which side of the body's nearest triangle it lies.
+void measure_fidelity_and_body(const StrandSet& grown, const Points3f& hair_vertices,
+                               const Triangles3i& hair_triangles, const Points3f& body_vertices,
+                               const Triangles3i& body_triangles, double h,
+                               GrowMeasures& measures) {
   TriangleMeshDistance hair_distance(hair_vertices, hair_triangles);
   TriangleMeshDistance body_distance(body_vertices, body_triangles);
   std::vector<int64_t> rows;
@@ -148,8 +164,14 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
   std::tie(measures.fidelity_mean_h, measures.fidelity_p95_h) = mean_and_p95(fidelity);
   measures.inside_body_share =
       rows.empty() ? 0.0 : static_cast<double>(inside) / static_cast<double>(rows.size());
+}
 
-  // Roots to the scalp.
+/// Roots to the scalp into `measures`: the largest and mean distance of a root from the
+/// scalp triangles.
+void measure_roots_to_scalp(const StrandSet& grown, const Points3f& body_vertices,
+                            const Triangles3i& body_triangles,
+                            const std::vector<uint8_t>& scalp_triangle, double h,
+                            GrowMeasures& measures) {
   Triangles3i scalp(body_triangles.rows(), 3);
   Eigen::Index scalp_count = 0;
   for (Eigen::Index t = 0; t < body_triangles.rows(); ++t)
@@ -165,6 +187,30 @@ GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_
   }
   measures.root_distance_max_h = root_max;
   measures.root_distance_mean_h = root_sum / static_cast<double>(grown.strand_count());
+}
+
+}  // namespace
+
+GrowMeasures measure_grown_strands(const StrandSet& grown, const Points3f& hair_vertices,
+                                   const Triangles3i& hair_triangles, const Points3f& body_vertices,
+                                   const Triangles3i& body_triangles,
+                                   const std::vector<uint8_t>& scalp_triangle, double head_height_m,
+                                   int64_t mesh_sample_count,
+                                   const std::vector<int32_t>& hair_triangle_group) {
+  if (grown.strand_count() == 0 || hair_triangles.rows() == 0 || body_triangles.rows() == 0)
+    throw Error::usage("measure_grown_strands: nothing to measure");
+  const double h = head_height_m;
+  GrowMeasures measures;
+  // Coverage: mesh samples to the nearest grown segment.
+  const MeshSamples samples = sample_hair_mesh(hair_vertices, hair_triangles, mesh_sample_count);
+  measures.mesh_samples = mesh_sample_count;
+  std::vector<double> coverage = coverage_h(grown, samples.points, h);
+  if (hair_triangle_group.size() == static_cast<size_t>(hair_triangles.rows()))
+    measure_worst_group(coverage, samples.triangle, hair_triangle_group, measures);
+  std::tie(measures.coverage_mean_h, measures.coverage_p95_h) = mean_and_p95(coverage);
+  measure_fidelity_and_body(grown, hair_vertices, hair_triangles, body_vertices, body_triangles,
+                            h, measures);
+  measure_roots_to_scalp(grown, body_vertices, body_triangles, scalp_triangle, h, measures);
   return measures;
 }
 

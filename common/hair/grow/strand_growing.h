@@ -30,9 +30,8 @@ struct GrowParams {
   /// Where the scalp triangles that root-type strands cover (as above) are less than this
   /// share of the area that strands of any type cover, the types do not say where the
   /// roots are (hair of tiny cards typed middle but for a handful): roots then take any
-  /// input strand, as when no group is root-type. 0 turns this off. afro01 with the
-  /// rooted typeify rule: 3%; the other MakeHuman meshes 92-100%, the 180 models of the
-  /// training corpus 23% or more.
+  /// input strand, as when no group is root-type. 0 turns this off
+  /// (docs/decisions/grow-typed-root-share.md).
   double min_typed_root_scalp_share = 0.1;
   /// ...but where that point's strand stands off the scalp (rises at more than 45 degrees
   /// to the triangle), only within this distance of it along the scalp: a card standing on
@@ -76,8 +75,8 @@ struct GrowParams {
   /// lay within its own reach before it, so the gap to it is wider than continue_radius_h.
   double continued_root_radius_h = 0.25;
   /// ...and entered turning by up to this angle: hair gathered by a band turns there, the
-  /// strands from the sides of the head most (about a right angle on ponytail01, whose side
-  /// strands run back level and its tail hangs down).
+  /// strands from the sides of the head most (about a right angle where side strands run
+  /// back level and the tail hangs down).
   double continued_root_max_angle_deg = 120;
   /// Leaving the cluster it is rooted in, a strand enters the start of any strand of a
   /// cluster that does not start at the root (whatever its type) the same way, when that
@@ -88,22 +87,19 @@ struct GrowParams {
   /// ponytail's tail after its band; the lower part of some layered cuts), a strand whose
   /// card ends before it (cards stacked on a cap end anywhere) joins the nearest card that
   /// feeds it, running its way, within continue_radius_h and continue_max_angle_deg.
-  /// false: it ends where its card does. Off by default: ponytail01's strands ending in
-  /// its tail go from 64.5% to 76.4% with it and synthetic tails' grown strands come nearer
-  /// their true length, but the style classifiers retrained with it do worse on the real
-  /// meshes held out (82.4% of strands against 85.4%: braid01's cap is lost), and
+  /// false: it ends where its card does. Off by default: more strands reach a tail with it,
+  /// but the style classifiers retrained with it do worse on the real meshes held out, and
   /// interpolate must bridge the cap strands it sends into a braid (it does:
-  /// InterpolationParams::wisp_bridge_length_m). docs/grow.md, "Into the tail".
+  /// InterpolationParams::wisp_bridge_length_m); docs/decisions/grow-join-and-gather-off.md.
   bool join_continued_flow = false;
   /// A strand of a cap that gathers into a band (its root cluster has a group feeding a
   /// continuation) whose card ends on the cap with nothing to continue into goes on along
   /// its cluster's field, by at most this far, until the start of a tail or braid hanging
-  /// off the scalp lies within continued_root_radius_h (braid01's crown cards end under
-  /// the cards that wrap round to its braid); 0: it ends where its card does. Off by
-  /// default: on braid01 the back cap's strands reaching the braid go from 39% to 87% with
-  /// 0.5 H, but the style classifiers retrained with it still call the braid normal, now
-  /// heavier, and the real meshes held out drop from 87.0% to 84.3% of strands
-  /// (docs/grow.md, "Into the tail").
+  /// off the scalp lies within continued_root_radius_h (crown cards that end under the
+  /// cards wrapping round to a braid); 0: it ends where its card does. Off by default: more
+  /// cap strands reach the braid with it, but the style classifiers retrained with it call
+  /// such a braid normal and hold out worse on the real meshes
+  /// (docs/decisions/grow-join-and-gather-off.md).
   double gather_along_field_h = 0;
   /// A strand following an input strand's group is lost (and looks for the next group)
   /// farther than this from the group's rails.
@@ -120,7 +116,7 @@ struct GrowParams {
   /// as continued_root_max_angle_deg allows). Where cards overlap (stacked spikes, layers)
   /// the next starts behind or beside the end of the last: bridged to its start, the
   /// strand ran back across the hair and on again, or hopped sideways from card to card
-  /// (short01's spikes chained so round its crown: grown along the paint 77.7% -> 82.5%).
+  /// (stacked spikes chained so round a crown).
   /// 0: to the start of any strand next_entry() finds.
   double bridge_max_angle_deg = 45;
   /// Nor does a bridge cut across the painted hair: where the face of the hair mesh nearest
@@ -128,9 +124,8 @@ struct GrowParams {
   /// (GrowInput::hair_triangle_flow), a strand whose way across the gap runs more than this
   /// angle off the strokes there is not continued into that strand. Hair that runs on
   /// past the end of its card into the next runs along the hair painted between them;
-  /// short01's spikes, stacked over its cap at every angle, ended tip against base and the
-  /// strands hopped from one to the next across the cap's strokes (its bridges ran 27%
-  /// along the paint). From card to card only: out of its field, a strand may rise across
+  /// spikes stacked over a cap at every angle end tip against base, and strands would hop
+  /// from one to the next across the cap's strokes. From card to card only: out of its field, a strand may rise across
   /// the hair it leaves into a card stacked on it (a tuft on a cap that no other hair
   /// reaches). 30: within what hair-grow-report counts as along the flow. 0: no check.
   double bridge_paint_max_angle_deg = 30;
@@ -157,8 +152,8 @@ struct GrowParams {
   double layer_pull = 0.5;
   /// ...except over the first this much of its length (H): a strand rooted under its
   /// layer climbs to it at an even slope, the height it has to climb at its first step over
-  /// this length, gently under hair lying on the head (short01's cap 7 mm up: about 20
-  /// degrees) and steeply under a shell standing off it (bob01's, 2-4 cm: 45-65 degrees),
+  /// this length, gently under hair lying on the head (a cap 7 mm up: about 20 degrees)
+  /// and steeply under a shell standing off it (2-4 cm: 45-65 degrees),
   /// as hair with volume at its roots does. 0: layer_pull from the root on.
   double layer_climb_h = 0.08;
   /// Over the first this much of its length along the field (H), a strand heads over the
@@ -170,7 +165,7 @@ struct GrowParams {
   double root_heading_paint_h = 0.06;
   int max_points_per_strand = 2000;
   /// No strand grows longer than this (a guard against strands that wander from group to
-  /// group; the longest MakeHuman hair, long01, is about 3.5 H).
+  /// group; hair to the waist is about 3.5 H long).
   double max_length_h = 6;
 };
 

@@ -117,9 +117,10 @@ bool same_uv_across(const PolyMesh& mesh, int64_t face_a, int corner_a, int64_t 
   return true;
 }
 
-}  // namespace
-
-QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviation_deg) {
+/// The pairs of triangles that may make a quad (see quads_from_triangles()), in the
+/// greedy order: the most rectangular first, ties broken by face id.
+std::vector<PairCandidate> pair_candidates(const PolyMesh& mesh,
+                                           double max_corner_deviation_deg) {
   std::unordered_map<uint64_t, std::pair<int64_t, int>> triangle_with_edge;
   for (int64_t f = 0; f < mesh.face_count(); ++f) {
     if (mesh.face_size(f) != 3) continue;
@@ -164,9 +165,13 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
     return std::tie(x.rank_deviation_deg, x.worst_corner_deviation_deg, x.face_a, x.face_b) <
            std::tie(y.rank_deviation_deg, y.worst_corner_deviation_deg, y.face_a, y.face_b);
   });
+  return candidates;
+}
 
-  // Greedy: the most rectangular pairs first, across the longest edges only.
-  const auto face_count = static_cast<size_t>(mesh.face_count());
+/// Greedy: the most rectangular pairs first, across the longest edges only. Returns each
+/// face's partner among `face_count` faces (-1 for none).
+std::vector<int64_t> greedy_pairs(const std::vector<PairCandidate>& candidates,
+                                  size_t face_count) {
   std::vector<int64_t> partner(face_count, -1);
   for (const PairCandidate& candidate : candidates) {
     if (!candidate.longest) continue;
@@ -174,11 +179,17 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
     partner[candidate.face_a] = candidate.face_b;
     partner[candidate.face_b] = candidate.face_a;
   }
-  // A triangulated card is a perfect matching of its triangles. Where the greedy pass
-  // leaves triangles alone (a quad split along its shorter diagonal, or a pair that took
-  // one triangle of each of two quads and stranded their partners), Edmonds' augmenting
-  // paths over every candidate re-pair along the strip until no more triangles can be
-  // paired.
+  return partner;
+}
+
+/// A triangulated card is a perfect matching of its triangles. Where the greedy pass
+/// leaves triangles alone (a quad split along its shorter diagonal, or a pair that took
+/// one triangle of each of two quads and stranded their partners), Edmonds' augmenting
+/// paths over every candidate re-pair along the strip until no more triangles can be
+/// paired. `partner` holds the greedy pairs and receives the maximum matching.
+void match_left_triangles(const std::vector<PairCandidate>& candidates,
+                          std::vector<int64_t>& partner) {
+  const size_t face_count = partner.size();
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
   using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
   const Vertex none = boost::graph_traits<Graph>::null_vertex();
@@ -197,6 +208,15 @@ QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviat
   augmenter.get_current_matching(mate.data());
   for (size_t f = 0; f < face_count; ++f)
     partner[f] = mate[f] == none ? -1 : static_cast<int64_t>(mate[f]);
+}
+
+}  // namespace
+
+QuadRecovery quads_from_triangles(const PolyMesh& mesh, double max_corner_deviation_deg) {
+  const std::vector<PairCandidate> candidates = pair_candidates(mesh, max_corner_deviation_deg);
+  const auto face_count = static_cast<size_t>(mesh.face_count());
+  std::vector<int64_t> partner = greedy_pairs(candidates, face_count);
+  match_left_triangles(candidates, partner);
 
   std::unordered_map<uint64_t, const PairCandidate*> candidate_of_pair;
   for (const PairCandidate& candidate : candidates)

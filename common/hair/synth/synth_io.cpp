@@ -182,6 +182,143 @@ void require_range(const std::string& name, double value, double lo, double hi) 
     throw Error::usage(fmt::format("{} = {}: expected {} to {}", name, value, lo, hi));
 }
 
+/// The component at `where` ("components[i].") of a specification: its keys checked, its
+/// kind read, then its knobs, each left at its default when absent.
+ComponentSpec component_from_json(const nlohmann::json& item, const std::string& where) {
+  require_known_keys(item, where,
+                     {"kind",
+                      "stream_count",
+                      "length_min_m",
+                      "length_max_m",
+                      "wave_amplitude_m",
+                      "wavelength_m",
+                      "strip_width_m",
+                      "azimuth_min_deg",
+                      "azimuth_max_deg",
+                      "polar_min_deg",
+                      "polar_max_deg",
+                      "band_azimuth_deg",
+                      "band_polar_deg",
+                      "braid_width_m",
+                      "braid_depth_m",
+                      "braid_period_m",
+                      "band_gap_m",
+                      "swirl_min_deg",
+                      "swirl_max_deg",
+                      "one_piece_rings",
+                      "one_piece_grid",
+                      "bun_radius_m",
+                      "ringlet_radius_m",
+                      "ringlet_pitch_m",
+                      "tube_sides",
+                      "folded_shell_thickness_m",
+                      "cap_volume_m",
+                      "cap_drape",
+                      "hang_volume_m",
+                      "rooted_under_volume",
+                      "braid_lift_m",
+                      "braid_tip_width_share",
+                      "braid_cards_per_lobe"});
+  ComponentSpec c;
+  std::string kind = "normal";
+  read_key(item, where, "kind", kind);
+  if (kind == "normal")
+    c.kind = ComponentSpec::Kind::normal;
+  else if (kind == "short_cards")
+    c.kind = ComponentSpec::Kind::short_cards;
+  else if (kind == "ponytail")
+    c.kind = ComponentSpec::Kind::ponytail;
+  else if (kind == "braid")
+    c.kind = ComponentSpec::Kind::braid;
+  else if (kind == "short_cap")
+    c.kind = ComponentSpec::Kind::short_cap;
+  else
+    throw Error::usage(where + "kind = \"" + kind +
+                       "\": expected normal, short_cards, short_cap, ponytail or braid");
+  read_key(item, where, "stream_count", c.stream_count);
+  read_key(item, where, "length_min_m", c.length_min_m);
+  read_key(item, where, "length_max_m", c.length_max_m);
+  read_key(item, where, "wave_amplitude_m", c.wave_amplitude_m);
+  read_key(item, where, "wavelength_m", c.wavelength_m);
+  read_key(item, where, "strip_width_m", c.strip_width_m);
+  read_key(item, where, "azimuth_min_deg", c.azimuth_min_deg);
+  read_key(item, where, "azimuth_max_deg", c.azimuth_max_deg);
+  read_key(item, where, "polar_min_deg", c.polar_min_deg);
+  read_key(item, where, "polar_max_deg", c.polar_max_deg);
+  read_key(item, where, "band_azimuth_deg", c.band_azimuth_deg);
+  read_key(item, where, "band_polar_deg", c.band_polar_deg);
+  read_key(item, where, "braid_width_m", c.braid_width_m);
+  read_key(item, where, "braid_depth_m", c.braid_depth_m);
+  read_key(item, where, "braid_period_m", c.braid_period_m);
+  read_key(item, where, "band_gap_m", c.band_gap_m);
+  read_key(item, where, "swirl_min_deg", c.swirl_min_deg);
+  read_key(item, where, "swirl_max_deg", c.swirl_max_deg);
+  read_key(item, where, "one_piece_rings", c.one_piece_rings);
+  read_key(item, where, "one_piece_grid", c.one_piece_grid);
+  read_key(item, where, "bun_radius_m", c.bun_radius_m);
+  read_key(item, where, "ringlet_radius_m", c.ringlet_radius_m);
+  read_key(item, where, "ringlet_pitch_m", c.ringlet_pitch_m);
+  read_key(item, where, "tube_sides", c.tube_sides);
+  read_key(item, where, "folded_shell_thickness_m", c.folded_shell_thickness_m);
+  read_key(item, where, "cap_volume_m", c.cap_volume_m);
+  read_key(item, where, "hang_volume_m", c.hang_volume_m);
+  read_key(item, where, "rooted_under_volume", c.rooted_under_volume);
+  read_key(item, where, "cap_drape", c.cap_drape);
+  read_key(item, where, "braid_lift_m", c.braid_lift_m);
+  read_key(item, where, "braid_tip_width_share", c.braid_tip_width_share);
+  read_key(item, where, "braid_cards_per_lobe", c.braid_cards_per_lobe);
+  return c;
+}
+
+/// Reads the specification's defects, `item`, into `d`: its keys checked, then each knob
+/// present.
+void read_defects(const nlohmann::json& item, DefectSpec& d) {
+  const std::string where = "defects.";
+  require_known_keys(item, where,
+                     {"rails_min",
+                      "rails_max",
+                      "cap_rails",
+                      "segment_length_m",
+                      "normal_pieces_max",
+                      "braid_piece_length_m",
+                      "gap_m",
+                      "overlap_share",
+                      "overlap_m",
+                      "jitter_m",
+                      "triangulate_share",
+                      "shorter_diagonal_share",
+                      "reversed_share",
+                      "shuffled_share",
+                      "scalp_lift_m",
+                      "body_clearance_m",
+                      "tucked_share",
+                      "tuck_length_m",
+                      "tuck_depth_m",
+                      "painted_texture",
+                      "painted_fade"});
+  read_key(item, where, "rails_min", d.rails_min);
+  read_key(item, where, "rails_max", d.rails_max);
+  read_key(item, where, "cap_rails", d.cap_rails);
+  read_key(item, where, "segment_length_m", d.segment_length_m);
+  read_key(item, where, "normal_pieces_max", d.normal_pieces_max);
+  read_key(item, where, "braid_piece_length_m", d.braid_piece_length_m);
+  read_key(item, where, "gap_m", d.gap_m);
+  read_key(item, where, "overlap_share", d.overlap_share);
+  read_key(item, where, "overlap_m", d.overlap_m);
+  read_key(item, where, "jitter_m", d.jitter_m);
+  read_key(item, where, "triangulate_share", d.triangulate_share);
+  read_key(item, where, "shorter_diagonal_share", d.shorter_diagonal_share);
+  read_key(item, where, "reversed_share", d.reversed_share);
+  read_key(item, where, "shuffled_share", d.shuffled_share);
+  read_key(item, where, "scalp_lift_m", d.scalp_lift_m);
+  read_key(item, where, "body_clearance_m", d.body_clearance_m);
+  read_key(item, where, "tucked_share", d.tucked_share);
+  read_key(item, where, "tuck_length_m", d.tuck_length_m);
+  read_key(item, where, "tuck_depth_m", d.tuck_depth_m);
+  read_key(item, where, "painted_texture", d.painted_texture);
+  read_key(item, where, "painted_fade", d.painted_fade);
+}
+
 }  // namespace
 
 HairStyleSpec spec_from_json(const nlohmann::json& json) {
@@ -190,142 +327,11 @@ HairStyleSpec spec_from_json(const nlohmann::json& json) {
   read_key(json, "", "name", spec.name);
   if (json.contains("components")) {
     if (!json["components"].is_array()) throw Error::usage("components: expected an array");
-    for (size_t i = 0; i < json["components"].size(); ++i) {
-      const nlohmann::json& item = json["components"][i];
-      std::string where = fmt::format("components[{}].", i);
-      require_known_keys(item, where,
-                         {"kind",
-                          "stream_count",
-                          "length_min_m",
-                          "length_max_m",
-                          "wave_amplitude_m",
-                          "wavelength_m",
-                          "strip_width_m",
-                          "azimuth_min_deg",
-                          "azimuth_max_deg",
-                          "polar_min_deg",
-                          "polar_max_deg",
-                          "band_azimuth_deg",
-                          "band_polar_deg",
-                          "braid_width_m",
-                          "braid_depth_m",
-                          "braid_period_m",
-                          "band_gap_m",
-                          "swirl_min_deg",
-                          "swirl_max_deg",
-                          "one_piece_rings",
-                          "one_piece_grid",
-                          "bun_radius_m",
-                          "ringlet_radius_m",
-                          "ringlet_pitch_m",
-                          "tube_sides",
-                          "folded_shell_thickness_m",
-                          "cap_volume_m",
-                          "cap_drape",
-                          "hang_volume_m",
-                          "rooted_under_volume",
-                          "braid_lift_m",
-                          "braid_tip_width_share",
-                          "braid_cards_per_lobe"});
-      ComponentSpec c;
-      std::string kind = "normal";
-      read_key(item, where, "kind", kind);
-      if (kind == "normal")
-        c.kind = ComponentSpec::Kind::normal;
-      else if (kind == "short_cards")
-        c.kind = ComponentSpec::Kind::short_cards;
-      else if (kind == "ponytail")
-        c.kind = ComponentSpec::Kind::ponytail;
-      else if (kind == "braid")
-        c.kind = ComponentSpec::Kind::braid;
-      else if (kind == "short_cap")
-        c.kind = ComponentSpec::Kind::short_cap;
-      else
-        throw Error::usage(where + "kind = \"" + kind +
-                           "\": expected normal, short_cards, short_cap, ponytail or braid");
-      read_key(item, where, "stream_count", c.stream_count);
-      read_key(item, where, "length_min_m", c.length_min_m);
-      read_key(item, where, "length_max_m", c.length_max_m);
-      read_key(item, where, "wave_amplitude_m", c.wave_amplitude_m);
-      read_key(item, where, "wavelength_m", c.wavelength_m);
-      read_key(item, where, "strip_width_m", c.strip_width_m);
-      read_key(item, where, "azimuth_min_deg", c.azimuth_min_deg);
-      read_key(item, where, "azimuth_max_deg", c.azimuth_max_deg);
-      read_key(item, where, "polar_min_deg", c.polar_min_deg);
-      read_key(item, where, "polar_max_deg", c.polar_max_deg);
-      read_key(item, where, "band_azimuth_deg", c.band_azimuth_deg);
-      read_key(item, where, "band_polar_deg", c.band_polar_deg);
-      read_key(item, where, "braid_width_m", c.braid_width_m);
-      read_key(item, where, "braid_depth_m", c.braid_depth_m);
-      read_key(item, where, "braid_period_m", c.braid_period_m);
-      read_key(item, where, "band_gap_m", c.band_gap_m);
-      read_key(item, where, "swirl_min_deg", c.swirl_min_deg);
-      read_key(item, where, "swirl_max_deg", c.swirl_max_deg);
-      read_key(item, where, "one_piece_rings", c.one_piece_rings);
-      read_key(item, where, "one_piece_grid", c.one_piece_grid);
-      read_key(item, where, "bun_radius_m", c.bun_radius_m);
-      read_key(item, where, "ringlet_radius_m", c.ringlet_radius_m);
-      read_key(item, where, "ringlet_pitch_m", c.ringlet_pitch_m);
-      read_key(item, where, "tube_sides", c.tube_sides);
-      read_key(item, where, "folded_shell_thickness_m", c.folded_shell_thickness_m);
-      read_key(item, where, "cap_volume_m", c.cap_volume_m);
-      read_key(item, where, "hang_volume_m", c.hang_volume_m);
-      read_key(item, where, "rooted_under_volume", c.rooted_under_volume);
-      read_key(item, where, "cap_drape", c.cap_drape);
-      read_key(item, where, "braid_lift_m", c.braid_lift_m);
-      read_key(item, where, "braid_tip_width_share", c.braid_tip_width_share);
-      read_key(item, where, "braid_cards_per_lobe", c.braid_cards_per_lobe);
-      spec.components.push_back(c);
-    }
+    for (size_t i = 0; i < json["components"].size(); ++i)
+      spec.components.push_back(
+          component_from_json(json["components"][i], fmt::format("components[{}].", i)));
   }
-  if (json.contains("defects")) {
-    const nlohmann::json& item = json["defects"];
-    const std::string where = "defects.";
-    require_known_keys(item, where,
-                       {"rails_min",
-                        "rails_max",
-                        "cap_rails",
-                        "segment_length_m",
-                        "normal_pieces_max",
-                        "braid_piece_length_m",
-                        "gap_m",
-                        "overlap_share",
-                        "overlap_m",
-                        "jitter_m",
-                        "triangulate_share",
-                        "shorter_diagonal_share",
-                        "reversed_share",
-                        "shuffled_share",
-                        "scalp_lift_m",
-                        "body_clearance_m",
-                        "tucked_share",
-                        "tuck_length_m",
-                        "tuck_depth_m",
-                        "painted_texture",
-                        "painted_fade"});
-    DefectSpec& d = spec.defects;
-    read_key(item, where, "rails_min", d.rails_min);
-    read_key(item, where, "rails_max", d.rails_max);
-    read_key(item, where, "cap_rails", d.cap_rails);
-    read_key(item, where, "segment_length_m", d.segment_length_m);
-    read_key(item, where, "normal_pieces_max", d.normal_pieces_max);
-    read_key(item, where, "braid_piece_length_m", d.braid_piece_length_m);
-    read_key(item, where, "gap_m", d.gap_m);
-    read_key(item, where, "overlap_share", d.overlap_share);
-    read_key(item, where, "overlap_m", d.overlap_m);
-    read_key(item, where, "jitter_m", d.jitter_m);
-    read_key(item, where, "triangulate_share", d.triangulate_share);
-    read_key(item, where, "shorter_diagonal_share", d.shorter_diagonal_share);
-    read_key(item, where, "reversed_share", d.reversed_share);
-    read_key(item, where, "shuffled_share", d.shuffled_share);
-    read_key(item, where, "scalp_lift_m", d.scalp_lift_m);
-    read_key(item, where, "body_clearance_m", d.body_clearance_m);
-    read_key(item, where, "tucked_share", d.tucked_share);
-    read_key(item, where, "tuck_length_m", d.tuck_length_m);
-    read_key(item, where, "tuck_depth_m", d.tuck_depth_m);
-    read_key(item, where, "painted_texture", d.painted_texture);
-    read_key(item, where, "painted_fade", d.painted_fade);
-  }
+  if (json.contains("defects")) read_defects(json["defects"], spec.defects);
   check_spec(spec);
   return spec;
 }

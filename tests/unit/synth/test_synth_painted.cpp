@@ -99,7 +99,7 @@ double along_floor(const std::string& preset_name) {
 
 /// Root to tip, the issue asks 95% of the strands: every painted preset meets it since the
 /// paint overrules vertex ids that run tip to root and the continuations it contradicts
-/// (paint_overrules in extract.cpp), and the triangles of the ringlets' twisted tubes
+/// (paint_overrules in region_orientation.cpp), and the triangles of the ringlets' twisted tubes
 /// pair back into quads by their texture's rectangles (the ringlets' seed 3 read 87.6%,
 /// its tubes come apart; then 92.3%, three tube pieces read on by continuation from where
 /// they start under the cap's edge).
