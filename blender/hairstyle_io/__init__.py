@@ -1,4 +1,14 @@
-# hairstyle_io: a Blender add-on that opens the hairstyle pipeline's HDF5 files.
+# hairstyle_io: a Blender add-on that opens the hairstyle pipeline's HDF5 files and runs
+# the pipeline from Blender.
+#
+# The panel (3D viewport, N sidebar > Hairstyle) converts a hair mesh and the body into
+# strands by the pipeline's installed binaries in the background (Convert, with a
+# progress bar and Cancel), lists each cluster's style and confidence, pins a style (Fix
+# style: classify reruns) and simulates under a head motion (Simulate and bake), the
+# frames playing on the curves. Modules: panel, operators (the chains' driver), runner
+# (subprocesses), stages (the command lines), binaries and preferences (where the
+# binaries are), mesh_export, overrides, keyframes, results (what the scene gets),
+# properties; scene and hdf5_files read the files.
 #
 # File > Import > hairstyle strands (.h5) reads strands.h5 (grow) as a hair curves
 # object, with each strand's cluster and the cluster's style (from styles.h5 beside it)
@@ -14,12 +24,13 @@
 # message and nothing is added to the scene. Install: docs/blender.md.
 
 bl_info = {
-    "name": "hairstyle: strands, styles, frames and the body from HDF5",
+    "name": "hairstyle: hair cards to strands, styles and frames",
     "author": "hairstyle",
-    "version": (1, 0, 0),
+    "version": (1, 1, 0),
     "blender": (3, 4, 0),
-    "location": "File > Import > hairstyle strands (.h5)",
-    "description": "Imports the hairstyle pipeline's strands.h5, styles.h5, frames.h5 and "
+    "location": "View3D > Sidebar > Hairstyle; File > Import > hairstyle strands (.h5)",
+    "description": "Converts hair cards to strands with styles and simulates them with the "
+                   "hairstyle pipeline; imports its strands.h5, styles.h5, frames.h5 and "
                    "extract.h5 as hair curves and a body mesh",
     "category": "Import-Export",
 }
@@ -71,10 +82,39 @@ if bpy is not None:
         self.layout.operator(IMPORT_OT_hairstyle_strands.bl_idname,
                              text="hairstyle strands (.h5)")
 
+    from bpy.app.handlers import persistent
+
+    from . import operators, panel, preferences, properties, runner, scene
+
+    @persistent
+    def _cancel_on_load(*args):
+        operators.drop_running()  # another file: the running chain's results have no scene
+
+    @persistent
+    def _follow_frames_on_load(*args):
+        """A saved file's curves play their frames.h5 again."""
+        if any(scene.FRAMES_PATH_PROPERTY in obj for obj in bpy.data.objects):
+            scene.register_frame_handler()
+
+    _CLASSES = (IMPORT_OT_hairstyle_strands, *preferences.CLASSES, *operators.CLASSES,
+                *panel.CLASSES)
+
     def register():
-        bpy.utils.register_class(IMPORT_OT_hairstyle_strands)
+        properties.register()
+        for cls in _CLASSES:
+            bpy.utils.register_class(cls)
         bpy.types.TOPBAR_MT_file_import.append(menu_import)
+        bpy.app.handlers.load_pre.append(_cancel_on_load)
+        bpy.app.handlers.load_post.append(_follow_frames_on_load)
 
     def unregister():
+        operators.drop_running()
+        runner.cancel_all()
+        if _cancel_on_load in bpy.app.handlers.load_pre:
+            bpy.app.handlers.load_pre.remove(_cancel_on_load)
+        if _follow_frames_on_load in bpy.app.handlers.load_post:
+            bpy.app.handlers.load_post.remove(_follow_frames_on_load)
         bpy.types.TOPBAR_MT_file_import.remove(menu_import)
-        bpy.utils.unregister_class(IMPORT_OT_hairstyle_strands)
+        for cls in reversed(_CLASSES):
+            bpy.utils.unregister_class(cls)
+        properties.unregister()

@@ -107,12 +107,36 @@ def read_strands(path):
     return points, offsets, cluster
 
 
+def read_point_clusters(path):
+    """strands.h5: the cluster of every point (a strand can run through several)."""
+    with _open(path, "hairstyle.strands") as file:
+        count = file["/strands/points"].shape[0] if "/strands/points" in file else -1
+        cluster = _dataset(file, path, "/strands/point_attributes/cluster", 1).astype(np.int32)
+    if len(cluster) != count:
+        raise HairstyleFileError(f"{path}: a cluster for {len(cluster)} of {count} points")
+    return cluster
+
+
 def read_cluster_styles(path):
     """styles.h5: the style of every cluster (-1 none) and whether the user pinned it."""
     with _open(path, "hairstyle.styles") as file:
         style = _dataset(file, path, "/clusters/style", 1).astype(np.int32)
         pinned = _dataset(file, path, "/clusters/pinned", 1).astype(np.int32)
     return style, pinned
+
+
+def read_cluster_table(path):
+    """styles.h5: per cluster its style (-1 none), confidence (0 to 1), whether it is
+    unsure, pinned, and its strands; a dict of equally long arrays."""
+    with _open(path, "hairstyle.styles") as file:
+        table = {"style": _dataset(file, path, "/clusters/style", 1).astype(np.int32),
+                 "confidence": _dataset(file, path, "/clusters/confidence", 1).astype(np.float64),
+                 "unsure": _dataset(file, path, "/clusters/unsure", 1).astype(bool),
+                 "pinned": _dataset(file, path, "/clusters/pinned", 1).astype(bool),
+                 "strand_count": _dataset(file, path, "/clusters/strand_count", 1).astype(np.int64)}
+    if len({len(column) for column in table.values()}) != 1:
+        raise HairstyleFileError(f"{path}: the /clusters datasets differ in length")
+    return table
 
 
 def read_body(path):

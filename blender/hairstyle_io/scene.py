@@ -6,6 +6,7 @@
 # Axes: the pipeline's files are metres with +Y up (as OBJ and MakeHuman); Blender's up
 # is +Z, so a point (x, y, z) becomes (x, -z, y), as Blender's own OBJ importer turns it.
 
+import contextlib
 import os
 
 import numpy as np
@@ -90,10 +91,14 @@ def _curves_object(name, points, offsets):
     return converted
 
 
-def _set_curve_attribute(curves, name, kind, values):
-    attribute = curves.attributes.new(name, kind, "CURVE")
+def _set_attribute(curves, name, kind, domain, values):
+    attribute = curves.attributes.new(name, kind, domain)
     field = "color" if kind == "FLOAT_COLOR" else "value"
     attribute.data.foreach_set(field, np.asarray(values).ravel())
+
+
+def _set_curve_attribute(curves, name, kind, values):
+    _set_attribute(curves, name, kind, "CURVE", values)
 
 
 def _removing_on_failure(made, build):
@@ -115,17 +120,52 @@ def _removing_on_failure(made, build):
         raise
 
 
-def _style_attributes(curves_object, strand_cluster, cluster_style):
+def _colours(style, unsure=None):
+    """RGBA in the paper's colours of `style` (-1 to 3), paler where `unsure`."""
+    table = np.array([hdf5_files.STYLE_COLOURS[k] + (1.0,) for k in range(-1, 4)],
+                     dtype=np.float32)
+    colours = table[np.clip(style, -1, 3) + 1]
+    if unsure is not None:
+        colours[unsure, :3] = 0.5 * colours[unsure, :3] + 0.5  # pale, as hair-render draws them
+    return colours
+
+
+def _per_cluster(values, cluster, missing):
+    """values[cluster], `missing` where the cluster is out of range."""
+    valid = (cluster >= 0) & (cluster < len(values))
+    return np.where(valid, np.asarray(values)[np.clip(cluster, 0, max(len(values) - 1, 0))],
+                    missing)
+
+
+def set_style_attributes(curves_object, strand_cluster, cluster_style, cluster_unsure=None,
+                         point_cluster=None):
+    """The curve attributes "cluster" and, with the clusters' styles, "style" (a strand's
+    root cluster's); "style_colour" in the paper's colours, per point by the point's own
+    cluster where `point_cluster` is given (a ponytail's cap fixed, its tail normal; the
+    point attribute "point_cluster" keeps them), else per strand; the clusters that
+    `cluster_unsure` marks pale and in the attribute "unsure". Replaces any that are there."""
     curves = curves_object.data
+    for name in ("cluster", "style", "style_colour", "unsure", "point_cluster"):
+        if name in curves.attributes:
+            curves.attributes.remove(curves.attributes[name])
     _set_curve_attribute(curves, "cluster", "INT", strand_cluster.astype(np.int32))
+    if point_cluster is not None:
+        _set_attribute(curves, "point_cluster", "INT", "POINT", point_cluster.astype(np.int32))
     if cluster_style is None:
         return
-    valid = (strand_cluster >= 0) & (strand_cluster < len(cluster_style))
-    style = np.where(valid, cluster_style[np.clip(strand_cluster, 0, len(cluster_style) - 1)], -1)
+    style = _per_cluster(cluster_style, strand_cluster, -1)
     _set_curve_attribute(curves, "style", "INT", style.astype(np.int32))
-    colours = np.array([hdf5_files.STYLE_COLOURS[int(s)] + (1.0,) for s in style],
-                       dtype=np.float32)
-    _set_curve_attribute(curves, "style_colour", "FLOAT_COLOR", colours)
+    unsure = None
+    if cluster_unsure is not None:
+        unsure = _per_cluster(cluster_unsure, strand_cluster, 0) != 0
+        _set_curve_attribute(curves, "unsure", "INT", unsure.astype(np.int32))
+    if point_cluster is None:
+        _set_curve_attribute(curves, "style_colour", "FLOAT_COLOR", _colours(style, unsure))
+        return
+    point_unsure = None if cluster_unsure is None else \
+        _per_cluster(cluster_unsure, point_cluster, 0) != 0
+    _set_attribute(curves, "style_colour", "FLOAT_COLOR", "POINT",
+                   _colours(_per_cluster(cluster_style, point_cluster, -1), point_unsure))
 
 
 def import_body(extract_path, name="body"):
@@ -149,7 +189,8 @@ def import_body(extract_path, name="body"):
 def import_strands(strands_path, styles_path=None, extract_path=None, with_neighbours=False,
                    name=None):
     """strands.h5 as a hair curves object: a curve per strand, the attributes "cluster"
-    (per curve) and, with a styles.h5, "style" and "style_colour" (the paper's colours).
+    (per curve), "point_cluster" (per point) and, with a styles.h5, "style" (per curve)
+    and "style_colour" (per point, the paper's colour of the point's cluster's style).
     With `with_neighbours`, styles.h5 and extract.h5 in the same folder are used when
     present (the body is added too). Returns the curves object."""
     _require_blender()
@@ -158,6 +199,7 @@ def import_strands(strands_path, styles_path=None, extract_path=None, with_neigh
         styles_path = styles_path or _if_exists(os.path.join(folder, "styles.h5"))
         extract_path = extract_path or _if_exists(os.path.join(folder, "extract.h5"))
     points, offsets, cluster = hdf5_files.read_strands(strands_path)
+    point_cluster = hdf5_files.read_point_clusters(strands_path)
     cluster_style = hdf5_files.read_cluster_styles(styles_path)[0] if styles_path else None
     body = hdf5_files.read_body(extract_path) if extract_path else None
     name = name or os.path.basename(folder) or "strands"
@@ -165,7 +207,7 @@ def import_strands(strands_path, styles_path=None, extract_path=None, with_neigh
     def build(made):
         curves_object = _curves_object(name, points, offsets)
         made.append(curves_object)
-        _style_attributes(curves_object, cluster, cluster_style)
+        set_style_attributes(curves_object, cluster, cluster_style, point_cluster=point_cluster)
         if body is not None:
             made.append(import_body(extract_path, name + " body"))
         return curves_object
@@ -202,24 +244,36 @@ def import_frames(frames_path, frame_start=0, frame_end=None, name=None, extract
     def build(made):
         curves_object = _curves_object(name, points, offsets)
         made.append(curves_object)
-        _style_attributes(curves_object, cluster, cluster_style)
-        curves_object[FRAMES_PATH_PROPERTY] = os.path.abspath(frames_path)
-        curves_object[FRAMES_FIRST_PROPERTY] = int(frame_start)
-        curves_object[FRAMES_COUNT_PROPERTY] = int(end - frame_start)
+        set_style_attributes(curves_object, cluster, cluster_style)
+        body = None
         if body_data is not None:
             body = import_body(extract_path, name + " body")
             made.append(body)
-            body[FRAMES_BODY_PROPERTY] = os.path.abspath(frames_path)
-            body[FRAMES_FIRST_PROPERTY] = int(frame_start)
-            body[FRAMES_COUNT_PROPERTY] = int(end - frame_start)
-            body.matrix_world = _blender_matrix(first_head)
-        scene = bpy.context.scene
-        scene.frame_start, scene.frame_end = 1, int(end - frame_start)
-        scene.render.fps = max(1, int(round(fps)))
-        register_frame_handler()
+        attach_frames(curves_object, frames_path, frame_start, end, fps, body, first_head)
         return curves_object
 
     return _removing_on_failure([], build)
+
+
+def attach_frames(curves_object, frames_path, frame_start, frame_end, fps, body=None,
+                  first_head=None):
+    """Makes `curves_object` (whose strands are those of frames.h5) follow the file's
+    frames frame_start to frame_end - 1 from Blender frame 1, and `body` the head of each
+    frame (at `first_head`, a 4 x 4 matrix, now); sets the scene's frame range and frame
+    rate to them and registers the frame handler."""
+    curves_object[FRAMES_PATH_PROPERTY] = os.path.abspath(frames_path)
+    curves_object[FRAMES_FIRST_PROPERTY] = int(frame_start)
+    curves_object[FRAMES_COUNT_PROPERTY] = int(frame_end - frame_start)
+    if body is not None:
+        body[FRAMES_BODY_PROPERTY] = os.path.abspath(frames_path)
+        body[FRAMES_FIRST_PROPERTY] = int(frame_start)
+        body[FRAMES_COUNT_PROPERTY] = int(frame_end - frame_start)
+        if first_head is not None:
+            body.matrix_basis = _blender_matrix(first_head)
+    scene = bpy.context.scene
+    scene.frame_start, scene.frame_end = 1, int(frame_end - frame_start)
+    scene.render.fps, scene.render.fps_base = max(1, int(round(fps))), 1.0
+    register_frame_handler()
 
 
 def _frame_row(obj, path_property, k):
@@ -250,15 +304,31 @@ def set_frame_head(body, k):
         return
     with hdf5_files.Frames(path) as frames:
         matrix = head_matrix(frames.head_rotation[row], frames.head_translation_m[row])
-    body.matrix_world = _blender_matrix(matrix)
+    body.matrix_basis = _blender_matrix(matrix)  # under a parent too (the add-on's results)
+
+
+_paused = False  # frames_paused()
 
 
 def _on_frame_change(scene, *args):
+    if _paused:
+        return
     for obj in scene.objects:
         if obj.type == "CURVES" and FRAMES_PATH_PROPERTY in obj:
             set_frame_points(obj, scene.frame_current - 1)
         elif FRAMES_BODY_PROPERTY in obj:
             set_frame_head(obj, scene.frame_current - 1)
+
+
+@contextlib.contextmanager
+def frames_paused():
+    """A `with` block in which changing the frame moves no object along its frames.h5."""
+    global _paused
+    was, _paused = _paused, True
+    try:
+        yield
+    finally:
+        _paused = was
 
 
 def register_frame_handler():
