@@ -1,7 +1,7 @@
 # Screenshots of the hairstyle panel for docs/blender.md, taken from Blender's own window
 # on a virtual display (no screen needed):
 #
-#   xvfb-run -s '-screen 0 1600x1000x24' blender --factory-startup --enable-event-simulate \
+#   xvfb-run -a -s '-screen 0 1600x1000x24' blender --factory-startup --enable-event-simulate \
 #     --python blender/hairstyle_panel_shots.py -- SAMPLES_DIR BIN_DIR WORK_DIR IMAGE_PREFIX
 #
 # Opens SAMPLES_DIR's body and braid01's cards, presses Convert (modal: the progress bar

@@ -15,6 +15,7 @@ import os
 import shutil
 import signal
 import subprocess
+import sys
 import tempfile
 import time
 
@@ -24,6 +25,11 @@ WORK_PREFIX = ".hairstyle-work-"
 TERMINATE_WAIT_S = 2.0
 
 _chains = set()  # the chains running in this process, ended when it exits
+
+# A stage runs in a process group of its own (Python 3.11's process_group; before it, a
+# setpgid in the child).
+_OWN_PROCESS_GROUP = ({"process_group": 0} if sys.version_info >= (3, 11)
+                      else {"preexec_fn": os.setpgrp})
 
 
 class Step:
@@ -131,7 +137,7 @@ class Chain:
             self._process = subprocess.Popen(
                 step.command, cwd=self.work, stdin=subprocess.DEVNULL,
                 stdout=subprocess.DEVNULL, stderr=self._stderr, env=self.environment,
-                start_new_session=True)  # its own process group: a Cancel ends all of it
+                **_OWN_PROCESS_GROUP)  # a Cancel ends all of it
         except OSError as error:
             self._process = None
             self._fail(f"{step.name}: cannot run {step.command[0]}: {error.strerror}")
