@@ -1,8 +1,11 @@
 #include "hair/core/atomic_file.h"
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <charconv>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -10,6 +13,29 @@
 #include "hair/core/error.h"
 
 namespace hair {
+namespace {
+
+/// Removes ".<name>.tmp.<pid>" files beside `final_path` whose process no longer runs on
+/// this machine: what a stage killed while writing left behind.
+void remove_stale_temporaries(const std::filesystem::path& directory,
+                              const std::filesystem::path& final_path) {
+  const std::string prefix = fmt::format(".{}.tmp.", final_path.filename().string());
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix)) continue;
+    long long pid = 0;
+    const char* first = name.data() + prefix.size();
+    const char* last = name.data() + name.size();
+    const auto [end, status] = std::from_chars(first, last, pid);
+    if (status != std::errc() || end != last || pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // still runs
+    std::error_code ignored;
+    std::filesystem::remove(entry.path(), ignored);
+  }
+}
+
+}  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path final_path) : final_path_(std::move(final_path)) {
   std::error_code error;
@@ -27,6 +53,7 @@ AtomicFile::AtomicFile(std::filesystem::path final_path) : final_path_(std::move
   }
   temporary_path_ = directory / fmt::format(".{}.tmp.{}", final_path_.filename().string(),
                                             static_cast<long long>(::getpid()));
+  remove_stale_temporaries(directory, final_path_);
 }
 
 AtomicFile::~AtomicFile() {

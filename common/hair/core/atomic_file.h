@@ -15,8 +15,10 @@ namespace hair {
 ///   output.commit();
 class AtomicFile {
  public:
-  /// Picks the temporary path ".<name>.tmp.<pid>" next to `final_path`. A missing
-  /// output directory, or a final path that is a directory, is a usage error.
+  /// Picks the temporary path ".<name>.tmp.<pid>" next to `final_path`, and removes the
+  /// temporary files of the same output left by processes of this machine that no longer
+  /// run (a stage killed with SIGKILL cannot remove its own). A missing output directory,
+  /// or a final path that is a directory, is a usage error.
   explicit AtomicFile(std::filesystem::path final_path);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;

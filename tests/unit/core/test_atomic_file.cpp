@@ -1,6 +1,10 @@
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <string>
 
 #include "hair/core/atomic_file.h"
 #include "hair/core/error.h"
@@ -85,6 +89,37 @@ TEST_F(AtomicFileTest, CommitWithoutATemporaryFileIsARuntimeError) {
     EXPECT_EQ(error.file(), path("nothing.h5").string());
   }
   EXPECT_FALSE(std::filesystem::exists(path("nothing.h5")));
+}
+
+}  // namespace
+}  // namespace hair
+
+namespace hair {
+namespace {
+
+/// A pid that runs no process: a child that has exited and been waited for.
+pid_t finished_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+TEST_F(AtomicFileTest, TemporariesOfKilledProcessesAreRemovedThoseOfLiveOnesKept) {
+  // A stage killed while writing leaves ".<name>.tmp.<pid>"; the next writer of that
+  // output removes it. A live process's temporary, another output's, and a name that only
+  // looks alike stay.
+  const std::string dead = std::to_string(finished_pid());
+  const std::string live = std::to_string(::getppid());
+  for (const std::string& name : {".types.h5.tmp." + dead, ".types.h5.tmp." + live,
+                                 ".strands.h5.tmp." + dead, ".types.h5.tmp.x" + dead})
+    std::ofstream(path(name)) << "partial";
+  const AtomicFile output(path("types.h5"));
+  EXPECT_FALSE(std::filesystem::exists(path(".types.h5.tmp." + dead)));
+  EXPECT_TRUE(std::filesystem::exists(path(".types.h5.tmp." + live)));
+  EXPECT_TRUE(std::filesystem::exists(path(".strands.h5.tmp." + dead)));
+  EXPECT_TRUE(std::filesystem::exists(path(".types.h5.tmp.x" + dead)));
 }
 
 }  // namespace
