@@ -60,7 +60,7 @@ for ((i = 1; i <= kills; ++i)); do
   mapfile -t stages < <(pgrep -f "^$bin/" || true)
   if ((${#stages[@]} > 0 && RANDOM % 5 != 0)); then
     victim=${stages[$((RANDOM % ${#stages[@]}))]}
-    what=$(ps -o args= -p "$victim" 2>/dev/null | awk '{ n = split($1, p, "/"); print p[n] }')
+    what=$(ps -o args= -p "$victim" 2>/dev/null | awk '{ n = split($1, p, "/"); print p[n] }') || what="a stage"
   else
     victim=$make_pid
     what=make
