@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The byte-flipped extract.h5 family (issue 30) through every program that reads it:
 # typeify, grow, classify, simulate, hair-render and hair-inspect, VARIANTS each
-# (default 300, the same fixed variants as the stage test), and writes
+# (default 300; the suite runs the first 120 of the same fixed variants), and writes
 # docs/bench/corrupted.md: per program, how many were refused (exit 2, one line, nothing
 # left behind) and how many read (the flip fell where the file holds nothing); any
 # other exit, a signal or a leftover file fails the run.

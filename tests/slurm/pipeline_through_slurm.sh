@@ -2,7 +2,8 @@
 # The pipeline through a real single-node Slurm (issue 29), run by ctest as
 # slurm.pipeline (exit 77: skipped, with the reason, where slurm-wlm and munge are not
 # installed or the test does not run as root; .ci/run installs them):
-#  1. the demo's models through every stage, each stage a Slurm job (LAUNCH=srun ...),
+#  1. one of the demo's models (ponytail01: a cap, a band and a tail; the other two
+#     run the same jobs, and the demo pipeline runs them in CI) through every stage, each stage a Slurm job (LAUNCH=srun ...),
 #     give byte-identical outputs to a local run, both with REPRODUCIBLE=yes, and the jobs
 #     visibly ran through Slurm (its job log lists one per stage and model);
 #  2. a job cancelled while it runs (scancel) leaves no output and no temporary file,
@@ -28,10 +29,18 @@ eval "$(bash scripts/slurm-local.sh start "$work/slurm")"
 export SLURM_CONF
 jobs_log=$work/slurm/jobs.log
 
+# The data: ponytail01 and the body, linked from data/samples.
+model=ponytail01
+data=$work/data
+mkdir -p "$data/hair/textures"
+ln -s "$source_dir/data/samples/body.obj" "$data/body.obj"
+ln -s "$source_dir/data/samples/hair/$model.obj" "$source_dir/data/samples/hair/$model.mtl" "$data/hair/"
+ln -s "$source_dir/data/samples/hair/textures/$model.png" "$data/hair/textures/"
+
 pipeline() {  # OUT [make arguments...]
   local out=$1
   shift
-  make -f Makefile.pipeline DATA=data/samples OUT="$out" BIN="$bin_dir" REPRODUCIBLE=yes \
+  make -f Makefile.pipeline DATA="$data" OUT="$out" BIN="$bin_dir" REPRODUCIBLE=yes \
     STAGE_FLAGS=--quiet "$@"
 }
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -49,14 +58,13 @@ for file in "$work"/local/*/*.h5; do
   cmp -s "$file" "$other" || fail "$other differs from the local run's"
   files=$((files + 1))
 done
-models=$(ls data/samples/hair/*.obj | wc -l)
+models=$(ls "$data"/hair/*.obj | wc -l)
 ((files == models * 8)) || fail "$files files, expected $((models * 8))"
 ran=$(grep -c 'JobState=COMPLETED' "$jobs_log")
 ((ran >= models * 8)) || fail "Slurm's job log lists $ran completed jobs, expected $((models * 8))"
 echo "ok: $models models, $files files through $ran Slurm jobs, identical to the local run"
 
-# 2. A cancelled job: simulate of one model, cancelled while it runs.
-model=ponytail01
+# 2. A cancelled job: simulate of the model, cancelled while it runs.
 rm -f "$work/cluster/$model/guides.h5" "$work/cluster/$model/frames.h5"
 before=$(grep -c 'JobState=COMPLETED' "$jobs_log")
 pipeline "$work/cluster" LAUNCH="$launch --job-name=hair-slow bash tests/slurm/slow.sh 30" all \

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "shared_outputs.h"
 #include "support/run_command.h"
 
 namespace hair::test {
@@ -33,8 +34,8 @@ struct SampleOutputs {
 
 /// Runs extract to cluster-all on `mesh` in `folder` (each file only if missing), then grow
 /// with `strand_count` strands if that is positive and strands.h5 is missing.
-inline SampleOutputs run_sample_pipeline(const std::filesystem::path& folder,
-                                         const std::filesystem::path& mesh, int strand_count) {
+inline SampleOutputs make_sample_pipeline(const std::filesystem::path& folder,
+                                          const std::filesystem::path& mesh, int strand_count) {
   std::filesystem::create_directories(folder);
   SampleOutputs out{folder / "extract.h5", folder / "types.h5", folder / "middle.h5",
                     folder / "clusters.h5", folder / "strands.h5"};
@@ -53,6 +54,21 @@ inline SampleOutputs run_sample_pipeline(const std::filesystem::path& folder,
     run_stage("grow", arguments);
   }
   return out;
+}
+
+/// make_sample_pipeline, whose files for a shipped sample (data/samples/hair) are made
+/// once per build and shared by the stage-test processes (shared_outputs).
+inline SampleOutputs run_sample_pipeline(const std::filesystem::path& folder,
+                                         const std::filesystem::path& mesh, int strand_count) {
+  if (mesh.parent_path() == kSamples / "hair") {
+    std::vector<std::string> names = {"extract.h5", "types.h5", "middle.h5", "clusters.h5"};
+    if (strand_count > 0) names.push_back("strands.h5");
+    shared_outputs("sample_" + mesh.stem().string() + "_" + std::to_string(strand_count), folder,
+                   names, [&](const std::filesystem::path& shared) {
+                     make_sample_pipeline(shared, mesh, strand_count);
+                   });
+  }
+  return make_sample_pipeline(folder, mesh, strand_count);
 }
 
 }  // namespace hair::test

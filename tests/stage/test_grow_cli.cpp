@@ -289,19 +289,25 @@ TEST_F(GrowCli, Bob01sStrandsEndWhereItsFrontCardsDiveIntoTheForehead) {
 }
 
 TEST_F(GrowCli, ReproducibleRunsAreByteIdenticalWhateverTheThreadCount) {
-  const Outputs braid = sample("braid01", true);
-  const std::string first = read_file_bytes(braid.strands);
-  // The first run used every core (the default).
+  const Outputs braid = sample("braid01", false);
+  // The first run uses every core (the default), the second too, the third one thread.
+  std::string first;
   for (const std::vector<std::string>& extra :
-       {std::vector<std::string>{}, std::vector<std::string>{"--threads", "1"}}) {
+       {std::vector<std::string>{}, std::vector<std::string>{},
+        std::vector<std::string>{"--threads", "1"}}) {
     fs::path again = directory() / "again.h5";
     std::vector<std::string> arguments = braid.grow_inputs();
     arguments.insert(arguments.end(),
                      {"--strand_count", std::to_string(kStrands), "-o", again.string()});
     arguments.insert(arguments.end(), extra.begin(), extra.end());
     run_stage("grow", arguments);
-    EXPECT_TRUE(read_file_bytes(again) == first)
-        << "grow " << (extra.empty() ? "" : extra[1] + " thread(s)") << " wrote other bytes";
+    if (first.empty()) {
+      first = read_file_bytes(again);
+      ASSERT_FALSE(first.empty());
+    } else {
+      EXPECT_TRUE(read_file_bytes(again) == first)
+          << "grow " << (extra.empty() ? "" : extra[1] + " thread(s)") << " wrote other bytes";
+    }
     fs::remove(again);
   }
 }
