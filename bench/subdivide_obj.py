@@ -5,13 +5,15 @@ face centre), each triangle four triangles; texture coordinates likewise.
 
     subdivide_obj.py IN.obj OUT.obj [LEVELS]
 
-Only v, vt and f (v or v/vt) lines are kept; LEVELS defaults to 1. Used by
+Only v, vt and f (v or v/vt) lines are kept, with the material library and each face's
+material (mtllib, usemtl), so the painted texture still applies; LEVELS defaults to 1. Used by
 bench/pipeline_scaling.sh."""
 import sys
 
 
-def subdivide(positions, uvs, faces):
-    """One level: positions and uvs are lists of tuples; faces lists of (v, vt|None) per corner."""
+def subdivide(positions, uvs, faces, materials):
+    """One level: positions and uvs are lists of tuples; faces lists of (v, vt|None) per
+    corner, materials each face's material name (or None). Returns the new faces and theirs."""
     edge_point, edge_uv = {}, {}
 
     def midpoint(table, points, a, b):
@@ -25,8 +27,9 @@ def subdivide(positions, uvs, faces):
         points.append(tuple(sum(c) / len(corners) for c in zip(*(points[i] for i in corners))))
         return len(points) - 1
 
-    out = []
-    for face in faces:
+    out, out_materials = [], []
+    for face, material in zip(faces, materials):
+        out_materials.extend([material] * (4 if len(face) == 3 else len(face)))
         n = len(face)
         vs = [v for v, _ in face]
         ts = [t for _, t in face]
@@ -43,14 +46,15 @@ def subdivide(positions, uvs, faces):
         c_t = centre(uvs, ts) if has_uv else None
         for i in range(n):
             out.append([(vs[i], ts[i]), (mid_v[i], mid_t[i]), (c_v, c_t), (mid_v[i - 1], mid_t[i - 1])])
-    return out
+    return out, out_materials
 
 
 def main():
     if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
     levels = int(sys.argv[3]) if len(sys.argv) == 4 else 1
-    positions, uvs, faces = [], [], []
+    positions, uvs, faces, materials, libraries = [], [], [], [], []
+    material = None
     with open(sys.argv[1]) as stream:
         for line in stream:
             words = line.split()
@@ -60,21 +64,32 @@ def main():
                 positions.append(tuple(float(x) for x in words[1:4]))
             elif words[0] == "vt":
                 uvs.append(tuple(float(x) for x in words[1:3]))
+            elif words[0] == "mtllib":
+                libraries.append(line.strip())
+            elif words[0] == "usemtl":
+                material = line.strip()
             elif words[0] == "f":
                 corners = []
                 for word in words[1:]:
                     parts = word.split("/")
                     corners.append((int(parts[0]) - 1, int(parts[1]) - 1 if len(parts) > 1 and parts[1] else None))
                 faces.append(corners)
+                materials.append(material)
     for _ in range(levels):
-        faces = subdivide(positions, uvs, faces)
+        faces, materials = subdivide(positions, uvs, faces, materials)
     with open(sys.argv[2], "w") as stream:
         stream.write(f"# {sys.argv[1]} subdivided {levels} times by bench/subdivide_obj.py\n")
         for p in positions:
             stream.write("v {:.6f} {:.6f} {:.6f}\n".format(*p))
         for t in uvs:
             stream.write("vt {:.6f} {:.6f}\n".format(*t))
-        for face in faces:
+        for library in libraries:
+            stream.write(library + "\n")
+        current = None
+        for face, material in zip(faces, materials):
+            if material != current and material is not None:
+                stream.write(material + "\n")
+                current = material
             stream.write("f " + " ".join(f"{v + 1}/{t + 1}" if t is not None else f"{v + 1}" for v, t in face) + "\n")
 
 

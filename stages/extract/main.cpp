@@ -24,8 +24,8 @@ int main(int argc, char** argv) {
   hair::declare_extract_params(app.params(), params);
 
   return app.run(argc, argv, [&] {
-    hair::PolyMesh hair_mesh = hair::read_mesh(hair_path, params.reader());
-    hair::PolyMesh body_mesh = hair::read_mesh(body_path, params.reader());
+    hair::PolyMesh hair_mesh = hair::read_mesh(hair_path, params.reader(), params.mesh_limit());
+    hair::PolyMesh body_mesh = hair::read_mesh(body_path, params.reader(), params.mesh_limit());
     const hair::PaintedTextures textures =
         hair::load_painted_textures(hair_mesh.materials, params.extract.painted_flow, hair_path);
     hair::ExtractResult result = hair::extract_strands(

@@ -227,6 +227,16 @@ TEST_F(ExtractCli, ParameterOutOfRange) {
                        {"alpha_fade_min_rail_fall"});
 }
 
+TEST_F(ExtractCli, AMeshOverTheTriangleLimitIsRefused) {
+  // braid01 (about 5,000 triangles) under a limit of 1,000, and the body (far more) under
+  // one that the hair passes: each refused naming its file and the setting.
+  const std::string braid = (kSamples / "hair" / "braid01.obj").string();
+  expect_clean_failure({braid, "--body", body_, "-o", "out.h5", "--max_mesh_triangles", "1000"},
+                       {"braid01.obj", "more triangles than the limit of 1000 (max_mesh_triangles)"});
+  expect_clean_failure({braid, "--body", body_, "-o", "out.h5", "--max_mesh_triangles", "6000"},
+                       {"body.obj", "(max_mesh_triangles)"});
+}
+
 TEST_F(ExtractCli, FailureLeavesExistingOutputUntouched) {
   const std::string hair = input("hair.obj", "v nan 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
   input("out.h5", "an earlier result that must survive\n");

@@ -18,6 +18,11 @@ void declare_reading_and_paint_params(ParamSet& params, ExtractStageParams& valu
              "how meshes are read: auto (native OBJ reader keeping vertex order, assimp for "
              "other formats) or assimp (assimp for every format)",
              {"auto", "assimp"});
+  params.add("max_mesh_triangles", values.max_mesh_triangles,
+             "the most triangles a hair or body mesh may have (a polygon of n corners counts "
+             "n - 2); a larger mesh is refused before it is processed (extract needs about 0.7 kB "
+             "a triangle)",
+             ParamRange::at_least(1));
   params.add("max_quad_corner_deviation_deg", p.max_quad_corner_deviation_deg,
              "worst corner angle off 90 degrees for two triangles to be paired into a quad",
              ParamRange::closed(0, 90));

@@ -12,10 +12,14 @@ namespace hair {
 struct ExtractStageParams {
   ExtractParams extract;
   std::string mesh_reader = "auto";  ///< "auto" or "assimp"; see MeshReader
+  /// The most triangles a hair or body mesh may have (docs/extract.md, "Limits": extract
+  /// needs about 0.7 kB and 0.1 ms a triangle, docs/bench/stage_resources.md).
+  int max_mesh_triangles = 4'000'000;
 
   MeshReader reader() const {
     return mesh_reader == "assimp" ? MeshReader::assimp : MeshReader::automatic;
   }
+  MeshLimit mesh_limit() const { return {max_mesh_triangles, "max_mesh_triangles"}; }
 };
 
 /// Registers every extract parameter with its description and range.

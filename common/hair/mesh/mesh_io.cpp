@@ -122,7 +122,7 @@ PolyMesh mesh_from_scene(const aiScene& scene, const std::filesystem::path& fold
   return mesh;
 }
 
-PolyMesh read_with_assimp(const std::filesystem::path& path) {
+PolyMesh read_with_assimp(const std::filesystem::path& path, const MeshLimit& limit) {
   Assimp::Importer importer;
   std::string extension = lowercase_extension(path);
   if (extension.empty() || !importer.IsExtensionSupported(extension))
@@ -133,19 +133,34 @@ PolyMesh read_with_assimp(const std::filesystem::path& path) {
   if (scene == nullptr)
     throw Error::bad_input(path.string(),
                            std::string("cannot read mesh: ") + importer.GetErrorString());
+  if (limit.max_triangles > 0) {
+    int64_t triangles = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+      for (unsigned f = 0; f < scene->mMeshes[m]->mNumFaces; ++f)
+        triangles += std::max<int64_t>(0, int64_t{scene->mMeshes[m]->mFaces[f].mNumIndices} - 2);
+    if (triangles > limit.max_triangles)
+      throw Error::bad_input(path.string(), mesh_limit_message(limit) + ": it has " +
+                                                std::to_string(triangles));
+  }
   return mesh_from_scene(*scene, path.parent_path());
 }
 
 }  // namespace
 
-PolyMesh read_mesh(const std::filesystem::path& path, MeshReader reader) {
+std::string mesh_limit_message(const MeshLimit& limit) {
+  return "more triangles than the limit of " + std::to_string(limit.max_triangles) + " (" +
+         limit.name + ")";
+}
+
+PolyMesh read_mesh(const std::filesystem::path& path, MeshReader reader, const MeshLimit& limit) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw Error::bad_input(path.string(), std::filesystem::exists(path, error)
                                               ? "not a regular file"
                                               : "no such file");
-  if (reader == MeshReader::automatic && lowercase_extension(path) == ".obj") return read_obj(path);
-  return read_with_assimp(path);
+  if (reader == MeshReader::automatic && lowercase_extension(path) == ".obj")
+    return read_obj(path, limit);
+  return read_with_assimp(path, limit);
 }
 
 }  // namespace hair

@@ -30,8 +30,8 @@ std::string_view next_token(std::string_view& rest) {
 
 class ObjParser {
  public:
-  explicit ObjParser(const std::filesystem::path& path)
-      : file_(path.string()), folder_(path.parent_path()) {}
+  ObjParser(const std::filesystem::path& path, const MeshLimit& limit)
+      : file_(path.string()), folder_(path.parent_path()), limit_(limit) {}
 
   [[noreturn]] void fail(const std::string& reason) const {
     throw Error::bad_input(file_, "line " + std::to_string(line_number_) + ": " + reason);
@@ -109,6 +109,9 @@ class ObjParser {
           corner_texcoord.push_back(texcoord);
         }
         if (face.size() < 3) fail("face with fewer than 3 vertices");
+        triangles_ += static_cast<int64_t>(face.size()) - 2;
+        if (limit_.max_triangles > 0 && triangles_ > limit_.max_triangles)
+          fail(mesh_limit_message(limit_));
         mesh.append_face(face);
         face_material.push_back(current_material_);
       }
@@ -167,6 +170,8 @@ class ObjParser {
 
   std::string file_;
   std::filesystem::path folder_;
+  MeshLimit limit_;
+  int64_t triangles_ = 0;
   long line_number_ = 0;
   int32_t current_material_ = -1;
   bool any_material_ = false;
@@ -174,10 +179,10 @@ class ObjParser {
 
 }  // namespace
 
-PolyMesh read_obj(const std::filesystem::path& path) {
+PolyMesh read_obj(const std::filesystem::path& path, const MeshLimit& limit) {
   std::ifstream input(path);
   if (!input) throw Error::bad_input(path.string(), "cannot open file");
-  return ObjParser(path).parse(input);
+  return ObjParser(path, limit).parse(input);
 }
 
 }  // namespace hair

@@ -113,6 +113,37 @@ TEST_F(MeshReading, BadFilesAreRejectedWithOneLine) {
             std::string::npos);
 }
 
+TEST_F(MeshReading, AMeshOverItsTriangleLimitIsRefusedByTheSettingsName) {
+  // Two quads are four triangles, in OBJ read natively and through assimp.
+  const std::filesystem::path path = write_file("quads.obj", kTwoQuads);
+  for (MeshReader reader : {MeshReader::automatic, MeshReader::assimp}) {
+    EXPECT_EQ(read_mesh(path, reader, {4, "max_mesh_triangles"}).face_count(), 2);
+    try {
+      read_mesh(path, reader, {3, "max_mesh_triangles"});
+      ADD_FAILURE() << "four triangles read under a limit of three";
+    } catch (const Error& error) {
+      EXPECT_EQ(error.exit_code(), 2);
+      const std::string message = error.what();
+      EXPECT_NE(message.find("quads.obj"), std::string::npos) << message;
+      EXPECT_NE(message.find("more triangles than the limit of 3 (max_mesh_triangles)"),
+                std::string::npos)
+          << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos);
+    }
+  }
+  // The native reader stops at the face that passes the limit: a file whose later lines
+  // are broken is refused for its size, not for the broken line.
+  const std::filesystem::path broken =
+      write_file("broken.obj", std::string(kTwoQuads) + "f 1 2 3\nf 1 2 3\nnot obj at all\n");
+  try {
+    read_mesh(broken, MeshReader::automatic, {4, "max_mesh_triangles"});
+    ADD_FAILURE() << "read past the limit";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("line 18: more triangles"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST_F(MeshReading, CleaningDropsRepeatedCornersAndDegenerateFaces) {
   PolyMesh mesh = read_mesh(write_file("degenerate.obj",
                                        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
