@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
         strands_path, result.frame_count, integrated, result.guides.size(), result.simulation_s,
         ms_per_frame, result.fixed_strands, result.braided_strands, worst_stretch,
         1e3 * worst_penetration);
+    spdlog::info("{}: time by phase: {}", strands_path, result.profile.summary());
 
     hair::GuidesFileInfo info;
     info.head_height_m = scene.head_height_m;

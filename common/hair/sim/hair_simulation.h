@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "hair/sim/simulation_profile.h"
 #include "hair/core/strand_set.h"
 #include "hair/geom/triangle_mesh_distance.h"
 #include "hair/sim/altitude_strand.h"
@@ -151,6 +152,7 @@ struct SimulationResult {
   int64_t fixed_strands = 0, braided_strands = 0;
   double setup_s = 0;       ///< guides, body field
   double simulation_s = 0;  ///< the frames
+  SimulationProfile profile;  ///< where the frames' time went, by phase
 };
 
 /// The point the head turns about: below the crown (the body's highest vertex) by the

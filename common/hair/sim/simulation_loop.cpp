@@ -86,11 +86,21 @@ void SimulationLoop::start() {
 }
 
 void SimulationLoop::run() {
+  {
+    PhaseTimer timer(profile_.loop_s);
+    run_frames();
+  }
+  result_.profile = profile_;
+  for (StrandStepper& stepper : steppers_) result_.profile += stepper.profile();
+}
+
+void SimulationLoop::run_frames() {
   const bool still = motion_.is_still();
   int quiet_frames = 0;
   for (int32_t frame = 1; frame < result_.frame_count; ++frame) {
     RigidTransform pose = motion_.at(frame / params_.fps);
     if (result_.settled_at_frame >= 0) {
+      PhaseTimer timer(profile_.frames_s);
       record_frame(frame, pose);
       FrameStatistics stats = result_.statistics.back();
       stats.time_s = frame / params_.fps;
@@ -99,9 +109,13 @@ void SimulationLoop::run() {
       continue;
     }
     integrate_frame(frame, pose);
-    record_frame(frame, pose);
-    FrameStatistics stats = frame_statistics(frame / params_.fps, pose);
-    result_.statistics.push_back(stats);
+    FrameStatistics stats;
+    {
+      PhaseTimer timer(profile_.frames_s);
+      record_frame(frame, pose);
+      stats = frame_statistics(frame / params_.fps, pose);
+      result_.statistics.push_back(stats);
+    }
     pending_energy_frame_ = frame;
     if (still) {
       quiet_frames = stats.max_speed_m_s < params_.settle_speed_h_s * h_ ? quiet_frames + 1 : 0;
@@ -129,13 +143,17 @@ void SimulationLoop::integrate_frame(int32_t frame, const RigidTransform& pose) 
     const bool repel = params_.repulsion_m_s2 > 0 && step == 0 &&
                        (frame - 1) % params_.repulsion_interval_frames == 0;
     if (repel) {
+      PhaseTimer timer(profile_.hair_hair_s);
       gather_hair();
       density_.build(hair_positions_);
     }
     // The tails' cohesion from the positions at the start of each step (explicit, its
     // stiffness held to 1 / dt^2 so that a long step stays stable): the centre lines of
     // the members' polylines, which each strand sampled at the end of its last step.
-    if (cohesion_.active()) cohesion_.update_centres();
+    if (cohesion_.active()) {
+      PhaseTimer timer(profile_.bundles_s);
+      cohesion_.update_centres();
+    }
     // A few guides are not worth a thread team's barrier per step (on a busy machine a
     // barrier can wait out another process's time slice).
 #pragma omp parallel for schedule(dynamic, 4) if (running_.size() >= 32)
@@ -172,16 +190,18 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
       strand.anchors[a].position_m = start;
       strand.anchors[a].velocity_m_s = (to.apply(strand.anchor_rest_m[a]) - start) / dt_s_;
     }
+    StrandStepper& stepper = steppers_[static_cast<size_t>(omp_get_thread_num())];
     if (repel) {
+      PhaseTimer timer(stepper.profile().hair_hair_s);
       for (int32_t i = 0; i < model.hair_count(); ++i)
         strand.acceleration_m_s2[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])] =
             repulsion(strand, i, from);
     }
     BodyCollider collider(*body_, from, to, clearance_m_, dt_s_);
-    StrandStepper& stepper = steppers_[static_cast<size_t>(omp_get_thread_num())];
     const Eigen::Matrix3d head_rotation = to.rotation.toRotationMatrix();
     const std::vector<Vec3>* acceleration = &strand.acceleration_m_s2;
     if (cohesion_.active() && cohesion_.member(g)) {
+      PhaseTimer timer(stepper.profile().bundles_s);
       std::vector<Vec3>& applied = applied_m_s2_[g];
       cohesion_.acceleration(g, running_, dt_s_, applied);
       for (size_t k = 0; k < applied.size(); ++k) applied[k] += strand.acceleration_m_s2[k];
@@ -196,7 +216,10 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
       auto k = static_cast<size_t>(q);
       x[k] = to.apply(model.rest_m[k]);
     }
-    if (cohesion_.active()) cohesion_.sample(g, running_);  // for the next step's centre
+    if (cohesion_.active()) {  // for the next step's centre
+      PhaseTimer timer(stepper.profile().bundles_s);
+      cohesion_.sample(g, running_);
+    }
     // Not finite, or diverged so far that it soon will be.
     const Vec3 centre = to.translation_m;
     for (size_t k = 0; k < x.size(); ++k)

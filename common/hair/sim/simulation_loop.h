@@ -33,6 +33,8 @@ class SimulationLoop {
   void run();
 
  private:
+  /// run()'s frames, timed by phase.
+  void run_frames();
   /// One frame's substeps over every strand, from the head's pose at the frame before to
   /// `pose`.
   void integrate_frame(int32_t frame, const RigidTransform& pose);
@@ -92,6 +94,7 @@ class SimulationLoop {
   /// evaluated again; it is worked out at once where no step follows (the last frame, a
   /// settled head).
   int32_t pending_energy_frame_ = -1;
+  SimulationProfile profile_;  ///< the serial phases' time; the steppers hold the rest
 };
 
 }  // namespace hair

@@ -270,11 +270,14 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
   const int32_t count = strand.particle_count();
   std::vector<Vec3>& x = state.position_m;
   std::vector<Vec3>& v = state.velocity_m_s;
-  if (count > first_free)
+  profile_.particle_steps += count;
+  if (count > first_free) {
     solve_velocities(strand, material, acceleration_m_s2, uniform_acceleration_m_s2, anchors, dt_s,
                      state, support_rotation);
-  else
+  } else {
+    PhaseTimer timer(profile_.springs_s);
     start_spring_energy_j_ = strand_spring_energy(strand, material, x);
+  }
 
   // Positions, then two passes over the hair segments from the root out.
   //  1. Strain limiting: a segment out of bounds is brought back by moving everything
@@ -287,15 +290,21 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
   //     velocity relative to the surface loses its normal part. (Counted as motion, a push
   //     out of the body flings the rest of the strand, and hair on the shoulders never
   //     comes to rest.)
-  start_.assign(x.begin(), x.end());
-  for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
-  limit_strain(strand, material, x);
-  limit_ghosts(strand, material, x);
-  for (int32_t q = first_free; q < count; ++q) {
-    auto k = static_cast<size_t>(q);
-    v[k] = (x[k] - start_[k]) / dt_s;
+  {
+    PhaseTimer timer(profile_.limits_s);
+    start_.assign(x.begin(), x.end());
+    for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
+    limit_strain(strand, material, x);
+    limit_ghosts(strand, material, x);
+    for (int32_t q = first_free; q < count; ++q) {
+      auto k = static_cast<size_t>(q);
+      v[k] = (x[k] - start_[k]) / dt_s;
+    }
   }
-  if (collider) collide_with_body(strand, material, *collider, friction, dt_s, state);
+  if (collider) {
+    PhaseTimer timer(profile_.collisions_s);
+    collide_with_body(strand, material, *collider, friction, dt_s, state);
+  }
 }
 
 void StrandStepper::solve_velocities(const AltitudeStrand& strand, const StrandMaterial& material,
@@ -309,13 +318,16 @@ void StrandStepper::solve_velocities(const AltitudeStrand& strand, const StrandM
   const int n = 3 * (count - first_free);
   const std::vector<Vec3>& x = state.position_m;
   std::vector<Vec3>& v = state.velocity_m_s;
-  BandSystem::reset(band_, rhs_, count, first_free);
-  BandSystem system(band_, rhs_, first_free);
-  add_inertia(system, strand, material, acceleration_m_s2, uniform_acceleration_m_s2, dt_s, v,
-              support_rotation);
-  start_spring_energy_j_ = add_springs(system, strand, material, dt_s, x, v);
-  if (first_free == 0) add_anchor_springs(system, strand, material, anchors, dt_s, x);
-
+  {
+    PhaseTimer timer(profile_.springs_s);
+    BandSystem::reset(band_, rhs_, count, first_free);
+    BandSystem system(band_, rhs_, first_free);
+    add_inertia(system, strand, material, acceleration_m_s2, uniform_acceleration_m_s2, dt_s, v,
+                support_rotation);
+    start_spring_energy_j_ = add_springs(system, strand, material, dt_s, x, v);
+    if (first_free == 0) add_anchor_springs(system, strand, material, anchors, dt_s, x);
+  }
+  PhaseTimer timer(profile_.solve_s);
   int info = solve_banded_spd(band_, rhs_, n, kBandwidth);
   if (info != 0)
     throw std::runtime_error("strand step: band matrix not positive definite (minor " +

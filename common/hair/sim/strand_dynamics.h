@@ -12,6 +12,7 @@
 
 #include "hair/sim/altitude_strand.h"
 #include "hair/sim/hair_fibre.h"
+#include "hair/sim/simulation_profile.h"
 
 namespace hair {
 
@@ -126,6 +127,10 @@ class StrandStepper {
   /// step instead of evaluating the springs again).
   double start_spring_energy_j() const { return start_spring_energy_j_; }
 
+  /// Time this stepper's steps spent in each of their phases, and the particle-steps
+  /// (springs_s, solve_s, limits_s, collisions_s, particle_steps; the rest is the caller's).
+  SimulationProfile& profile() { return profile_; }
+
  private:
   /// The implicit system of the step over the free particles, solved: their velocities.
   void solve_velocities(const AltitudeStrand& strand, const StrandMaterial& material,
@@ -139,6 +144,7 @@ class StrandStepper {
                          StrandState& state);
 
   double start_spring_energy_j_ = 0;
+  SimulationProfile profile_;
   std::vector<double> band_;  ///< LAPACK upper band storage, column-major
   std::vector<double> rhs_;
   std::vector<Eigen::Vector3d> start_;         ///< positions at the start of the step

@@ -253,6 +253,57 @@ TEST(HairSimulation, TwoRunsAndThreadCountsAgreeBitForBit) {
   EXPECT_EQ(one.wisp_frames, two.wisp_frames);
 }
 
+TEST(HairSimulation, TheProfileCountsEveryParticleStepAndSplitsTheFramesTime) {
+  SimulationScene scene = make_scene();
+  HeadMotion motion = HeadMotion::preset("nod", kPivot);
+  for (bool collisions : {true, false}) {
+    SimulationParams params = test_params();
+    params.body_collisions = collisions;
+    SimulationResult result = simulate_hair(scene, motion, params);
+    // Every guide (the wisp centre too) steps its hair and ghost particles every substep of
+    // every integrated frame.
+    int64_t particles = 0;
+    for (const SimulatedGuide& guide : result.guides)
+      particles += static_cast<int64_t>(guide.rest_m.size()) + guide.ghost_count;
+    int64_t integrated = 0;
+    for (const FrameStatistics& stats : result.statistics) integrated += stats.integrated;
+    integrated -= 1;  // frame 0, the rest
+    ASSERT_GT(integrated, 0);
+    const SimulationProfile& profile = result.profile;
+    EXPECT_EQ(profile.particle_steps, particles * params.substeps * integrated);
+    // The phases happen inside the frames: on one thread their sum is within the loop's
+    // wall time; on several, within the threads' time.
+    const double phases = profile.springs_s + profile.solve_s + profile.limits_s +
+                          profile.collisions_s + profile.hair_hair_s + profile.bundles_s +
+                          profile.frames_s;
+    EXPECT_GT(profile.loop_s, 0.0);
+    EXPECT_LE(phases, profile.loop_s * omp_get_max_threads() * 1.001 + 1e-4);
+    for (double seconds : {profile.springs_s, profile.solve_s, profile.limits_s,
+                           profile.frames_s})
+      EXPECT_GT(seconds, 0.0);
+    EXPECT_EQ(profile.collisions_s > 0, collisions);
+    EXPECT_NEAR(profile.ns_per_particle_step(),
+                1e9 * profile.loop_s / static_cast<double>(profile.particle_steps), 1e-9);
+    EXPECT_NE(profile.summary().find("ns per particle-step"), std::string::npos);
+  }
+}
+
+TEST(SimulationProfile, SharesOfThePhasesSum) {
+  SimulationProfile profile;
+  profile.springs_s = 3;
+  profile.solve_s = 1;
+  profile.loop_s = 2;
+  profile.particle_steps = 1000;
+  EXPECT_EQ(profile.summary(),
+            "springs 75.0%, solve 25.0%, limits 0.0%, collisions 0.0%, hair-hair 0.0%, "
+            "bundles 0.0%, frames 0.0%; 2000000.0 ns per particle-step");
+  SimulationProfile twice = profile;
+  twice += profile;
+  EXPECT_EQ(twice.particle_steps, 2000);
+  EXPECT_DOUBLE_EQ(twice.ns_per_particle_step(), profile.ns_per_particle_step());
+  EXPECT_EQ(SimulationProfile{}.ns_per_particle_step(), 0.0);
+}
+
 TEST(HairSimulation, ElasticEnergyReadOffTheNextStepEqualsItWorkedOutAtTheEnd) {
   // A frame's elastic energy comes from the next frame's first step, or is worked out at
   // the frame's end when it is the last: a run cut short at frame 6 works out that frame's
