@@ -58,14 +58,14 @@ double mean_cosine(const StrandSet& strands, const GroupSegments& segments, int6
     seen.clear();
     double cosine_sum = 0;
     int along = 0;  // neighbours running along the same axis
-    for (int32_t id : segments.index->within(midpoint, static_cast<float>(params.radius_m))) {
+    segments.index->visit_within(midpoint, static_cast<float>(params.radius_m), [&](int32_t id) {
       const int64_t other = segments.owner[static_cast<size_t>(id)];
-      if (other == s || std::find(seen.begin(), seen.end(), other) != seen.end()) continue;
+      if (other == s || std::find(seen.begin(), seen.end(), other) != seen.end()) return true;
       seen.push_back(other);  // its nearest segment: ids come nearest first
       const double cosine = direction.dot(segments.direction[static_cast<size_t>(id)]);
       if (std::abs(cosine) >= params.min_axis_cosine) cosine_sum += cosine, ++along;
-      if (static_cast<int>(seen.size()) >= params.neighbours) break;
-    }
+      return static_cast<int>(seen.size()) < params.neighbours;
+    });
     if (along == 0) continue;
     sum += cosine_sum / along;
     ++judged;

@@ -182,12 +182,12 @@ double SegmentIndex::agreement(const Points3f& points, float radius, int& judged
     Eigen::Vector3f segment = points.row(k) - points.row(k - 1);
     if (!(segment.norm() > 0)) continue;
     Eigen::Vector3f midpoint = 0.5f * (points.row(k) + points.row(k - 1)).transpose();
-    for (int32_t id : index_->within(midpoint, radius)) {
-      if (skip_owner && owner_[static_cast<size_t>(id)] == *skip_owner) continue;
+    index_->visit_within(midpoint, radius, [&](int32_t id) {
+      if (skip_owner && owner_[static_cast<size_t>(id)] == *skip_owner) return true;
       cosine_sum += segment.normalized().dot(direction_[static_cast<size_t>(id)]);
       ++judged;
-      break;  // the nearest
-    }
+      return false;  // the nearest
+    });
   }
   return cosine_sum;
 }

@@ -235,8 +235,9 @@ GrowingContext::Following GrowingContext::follow(int32_t group, bool backward,
   // A segment with a point within follow_radius_h has an end within that plus half its
   // length: the segments at the group's points within reach_m are all there can be.
   std::vector<int64_t> segments;  // first rows
-  for (int32_t id :
-       group_index_[g]->within(point.cast<float>(), static_cast<float>(group_reach_m_[g]))) {
+  // In any order: the segments are sorted below.
+  for (int32_t id : group_index_[g]->within_unordered(point.cast<float>(),
+                                                      static_cast<float>(group_reach_m_[g]))) {
     int64_t row = group_rows_[g][static_cast<size_t>(id)];
     int32_t s = strand_of_point(row);
     if (row > strands.offsets[s]) segments.push_back(row - 1);

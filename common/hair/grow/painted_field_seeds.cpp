@@ -44,20 +44,23 @@ struct GroupSegments {
                    double min_cosine) const {
     if (!index) return 0;
     int sign = 0;
+    bool disagree = false;
     std::vector<int64_t> seen;
-    for (int32_t id : index->within(point.cast<float>(), static_cast<float>(radius_m))) {
+    index->visit_within(point.cast<float>(), static_cast<float>(radius_m), [&](int32_t id) {
       const auto i = static_cast<size_t>(id);
       if (group[i] != wanted || std::find(seen.begin(), seen.end(), strand[i]) != seen.end())
-        continue;
+        return true;
       const double cosine = axis.dot(direction[i]);
-      if (std::abs(cosine) < min_cosine) return 0;
       const int this_sign = cosine > 0 ? 1 : -1;
-      if (sign != 0 && this_sign != sign) return 0;
+      if (std::abs(cosine) < min_cosine || (sign != 0 && this_sign != sign)) {
+        disagree = true;
+        return false;
+      }
       sign = this_sign;
       seen.push_back(strand[i]);
-      if (static_cast<int>(seen.size()) == count) break;
-    }
-    return sign;
+      return static_cast<int>(seen.size()) < count;
+    });
+    return disagree ? 0 : sign;
   }
 };
 

@@ -152,7 +152,7 @@ void cover_scalp_under_shells(const GrowInput& input, const GrowParams& params,
     if (!input.scalp_triangle[static_cast<size_t>(t)] || covered[static_cast<size_t>(t)]) continue;
     const Eigen::Vector3f centre =
         triangle_centre<float>(input.body_vertices, input.body_triangles, t);
-    if (!index.within(centre, cover_m).empty()) covered[static_cast<size_t>(t)] = 1;
+    if (index.any_within(centre, cover_m)) covered[static_cast<size_t>(t)] = 1;
   }
 }
 

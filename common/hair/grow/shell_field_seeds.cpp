@@ -79,7 +79,7 @@ StrandSet seeds_under_strands(const std::vector<Points3f>& strands,
           continue;
         }
         const Eigen::Vector3f seed = (o.foot + height_m * o.normal).cast<float>();
-        if (!hair.within(seed, inner_m).empty()) {
+        if (hair.any_within(seed, inner_m)) {
           flush();
           continue;
         }

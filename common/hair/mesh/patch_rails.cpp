@@ -158,13 +158,11 @@ std::unordered_map<int32_t, std::pair<int32_t, int32_t>> edge_traversal(
 /// family are parallel (v0->v1 matches v3->v2), so the chains through them must run
 /// the same way. Breadth-first over chains from the first.
 void orient_chains_consistently(const PolyMesh& mesh, std::span<const int64_t> faces,
-                                const LocalEdges& local, const std::vector<int32_t>& quads,
-                                int family, const std::vector<int8_t>& edge_family,
+                                const LocalEdges& local,
+                                const std::unordered_map<uint64_t, int32_t>& edge_of_key,
+                                const std::vector<int32_t>& quads, int family,
+                                const std::vector<int8_t>& edge_family,
                                 std::vector<std::vector<int32_t>>& chains) {
-  std::unordered_map<uint64_t, int32_t> edge_of_key;
-  for (size_t e = 0; e < local.edge_vertices.size(); ++e)
-    edge_of_key[undirected_edge_key(local.edge_vertices[e][0], local.edge_vertices[e][1])] =
-        static_cast<int32_t>(e);
   auto traversal = edge_traversal(chains, edge_of_key);
   // relation[c] lists (other chain, +1 same direction / -1 opposite).
   std::vector<std::vector<std::pair<int32_t, int>>> relation(chains.size());
@@ -206,13 +204,11 @@ void orient_chains_consistently(const PolyMesh& mesh, std::span<const int64_t> f
 
 /// Texture statistics of a family's oriented chains; see EdgeFamily.
 void texture_statistics(const PolyMesh& mesh, std::span<const int64_t> faces,
-                        const LocalEdges& local, const std::vector<int32_t>& quads, int family,
+                        const LocalEdges& local,
+                        const std::unordered_map<uint64_t, int32_t>& edge_of_key,
+                        const std::vector<int32_t>& quads, int family,
                         const std::vector<int8_t>& edge_family, EdgeFamily& result) {
   if (!mesh.has_uv()) return;
-  std::unordered_map<uint64_t, int32_t> edge_of_key;
-  for (size_t e = 0; e < local.edge_vertices.size(); ++e)
-    edge_of_key[undirected_edge_key(local.edge_vertices[e][0], local.edge_vertices[e][1])] =
-        static_cast<int32_t>(e);
   auto traversal = edge_traversal(result.chains, edge_of_key);
   double alignment_sum = 0, growth_sum = 0;
   int64_t samples = 0;
@@ -266,6 +262,13 @@ PatchTopology patch_topology(const PolyMesh& mesh, std::span<const int64_t> face
   for (const auto& [vertex, count] : quads_at_vertex)
     if (count != 4 && !on_boundary.contains(vertex)) ++topology.interior_poles;
 
+  // The patch's edges by their vertices, once for every region (a patch of many regions
+  // would otherwise build it again for each: time that grows with their product).
+  std::unordered_map<uint64_t, int32_t> edge_of_key;
+  for (size_t e = 0; e < local.edge_vertices.size(); ++e)
+    edge_of_key[undirected_edge_key(local.edge_vertices[e][0], local.edge_vertices[e][1])] =
+        static_cast<int32_t>(e);
+
   for (int32_t region = 0; region < colouring.region_count; ++region) {
     QuadRegion quad_region;
     quad_region.quad_count = static_cast<int64_t>(region_quads[region].size());
@@ -280,7 +283,7 @@ PatchTopology patch_topology(const PolyMesh& mesh, std::span<const int64_t> face
     for (int family = 0; family < 2; ++family) {
       EdgeFamily& result = quad_region.families[family];
       result.chains = edge_chains(local, family_edges[family]);
-      orient_chains_consistently(mesh, faces, local, region_quads[region], family,
+      orient_chains_consistently(mesh, faces, local, edge_of_key, region_quads[region], family,
                                  colouring.edge_family, result.chains);
       double total_length = 0;
       for (const auto& chain : result.chains) {
@@ -289,8 +292,8 @@ PatchTopology patch_topology(const PolyMesh& mesh, std::span<const int64_t> face
       }
       result.mean_chain_length =
           result.chains.empty() ? 0.0 : total_length / static_cast<double>(result.chains.size());
-      texture_statistics(mesh, faces, local, region_quads[region], family, colouring.edge_family,
-                         result);
+      texture_statistics(mesh, faces, local, edge_of_key, region_quads[region], family,
+                         colouring.edge_family, result);
     }
     topology.regions.push_back(std::move(quad_region));
   }

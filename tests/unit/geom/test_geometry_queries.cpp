@@ -2,6 +2,7 @@
 // head measures of the MakeHuman body.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "hair/extract/strand_orientation.h"
@@ -63,6 +64,66 @@ TEST(PointIndex, NeighboursMatchBruteForceNearestFirst) {
   ASSERT_EQ(nearest.size(), 5u);
   EXPECT_EQ(nearest[0], within[0]);
   EXPECT_EQ(index.nearest(query, 1000).size(), 500u);
+}
+
+TEST(PointIndex, VisitingTheFirstFewWithinARadiusFollowsTheFullListTiesIncluded) {
+  // A lattice: many points at exactly the same distance from its centre, so the order of
+  // ties (by id) decides which come first.
+  Points3f points(9 * 9 * 9, 3);
+  Eigen::Index row = 0;
+  for (int x = 0; x < 9; ++x)
+    for (int y = 0; y < 9; ++y)
+      for (int z = 0; z < 9; ++z) points.row(row++) << 0.1f * x, 0.1f * y, 0.1f * z;
+  PointIndex index(points);
+  for (const Eigen::Vector3f& query :
+       {Eigen::Vector3f(0.4f, 0.4f, 0.4f), Eigen::Vector3f(0.43f, 0.4f, 0.37f)}) {
+    const std::vector<int32_t> all = index.within(query, 0.25f);
+    ASSERT_GT(all.size(), 40u);
+    for (size_t count : {size_t{1}, size_t{6}, size_t{7}, size_t{19}, size_t{40}, all.size(),
+                         size_t{5000}}) {
+      std::vector<int32_t> first;
+      index.visit_within(query, 0.25f, [&](int32_t id) {
+        first.push_back(id);
+        return first.size() < count;
+      });
+      ASSERT_EQ(first.size(), std::min(all.size(), count)) << count;
+      EXPECT_TRUE(std::equal(first.begin(), first.end(), all.begin())) << count;
+    }
+  }
+}
+
+TEST(PointIndex, UnorderedAndAnyWithinAgreeWithWithin) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> unit(0, 1);
+  Points3f points(400, 3);
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    points.row(i) << unit(random), unit(random), unit(random);
+  PointIndex index(points);
+  for (int q = 0; q < 50; ++q) {
+    const Eigen::Vector3f query(unit(random), unit(random), unit(random));
+    for (float radius : {0.01f, 0.05f, 0.2f}) {
+      std::vector<int32_t> sorted = index.within(query, radius);
+      std::vector<int32_t> unordered = index.within_unordered(query, radius);
+      EXPECT_EQ(index.any_within(query, radius), !sorted.empty());
+      std::sort(sorted.begin(), sorted.end());
+      std::sort(unordered.begin(), unordered.end());
+      EXPECT_EQ(unordered, sorted);
+    }
+  }
+  EXPECT_FALSE(PointIndex(Points3f(0, 3)).any_within(Eigen::Vector3f::Zero(), 1.0f));
+  // visit_within: within()'s ids in its order, as far as the visitor asks.
+  const Eigen::Vector3f centre(0.5f, 0.5f, 0.5f);
+  const std::vector<int32_t> all = index.within(centre, 0.45f);
+  ASSERT_GT(all.size(), 100u);
+  for (size_t stop : {size_t{1}, size_t{16}, size_t{17}, size_t{80}, all.size(), all.size() + 5}) {
+    std::vector<int32_t> visited;
+    index.visit_within(centre, 0.45f, [&](int32_t id) {
+      visited.push_back(id);
+      return visited.size() < stop;
+    });
+    ASSERT_EQ(visited.size(), std::min(stop, all.size())) << stop;
+    EXPECT_TRUE(std::equal(visited.begin(), visited.end(), all.begin())) << stop;
+  }
 }
 
 TEST(DecideOrientation, RulesApplyInOrder) {
