@@ -8,7 +8,8 @@
 #    (every dataset and attribute: the same paths, so the same provenance),
 #  - no temporary file is left.
 # Writes a report (markdown) to REPORT (default docs/bench/kill_anywhere.md). Takes about
-# 10 minutes for 30 kills on 2 cores: a nightly bench, not a ctest test.
+# 40 s a kill on 2 cores with nothing else running (30 kills: about 25 minutes; twice that
+# beside other work): a nightly bench, not a ctest test.
 #
 #   bash bench/kill_anywhere.sh [KILLS (30)] [SEED (1)]
 #
