@@ -4,9 +4,9 @@
 # hair-hair repulsion and the tails' cohesion on, as pipelines/default has them) with 169,
 # 500, 1,000 and 2,000 guides on 1 and 2 threads: milliseconds per integrated frame
 # (median of RUNS), nanoseconds per particle-step (wall time of the frames over particles
-# times substeps integrated), and where the time goes, by phase (simulate's own profile:
-# springs, solve, limits, collisions, hair-hair, bundles, frames; the per-strand phases in
-# thread-seconds). With BEFORE=DIR (a build/bin of another commit) every row is run with
+# times substeps integrated), and where the time goes, by phase (simulate's own profile,
+# --profile_phases=true, in a run of its own: springs, solve, limits, collisions, hair-hair,
+# bundles, frames; the per-strand phases in thread-seconds). With BEFORE=DIR (a build/bin of another commit) every row is run with
 # that simulate too, alternating, and the ratio before / after is printed. Markdown on
 # stdout (docs/bench/simulate_scaling.md).
 #
@@ -36,12 +36,13 @@ if [[ -n ${BEFORE:-} ]]; then
   cp "$BEFORE/simulate" "$work/before/"
 fi
 
-# simulate_once BIN_DIR DIR GUIDES THREADS: one run; prints "ms_per_frame ns_per_particle_step
-# phases" from simulate's log (a build before the profile: "ms_per_frame - ...").
+# simulate_once BIN_DIR DIR GUIDES THREADS [OPTION...]: one run; prints "ms_per_frame
+# ns_per_particle_step phases" from simulate's log (a build before the profile:
+# "ms_per_frame - ...").
 simulate_once() {
   local log
   log=$("$1/simulate" "$2/extract.h5" "$2/strands.h5" "$2/styles.h5" --params "$params/simulate.toml" \
-    --motion shake --duration_s "$duration_s" --guide_count "$3" --threads "$4" -o "$2/guides.h5" 2>&1)
+    --motion shake --duration_s "$duration_s" --guide_count "$3" --threads "$4" -o "$2/guides.h5" "${@:5}" 2>&1)
   local ms phases ns
   ms=$(sed -n 's/.* \([0-9.]*\) ms per frame;.*/\1/p' <<<"$log")
   phases=$(sed -n 's/.*time by phase: \(.*\); [0-9.]* ns per particle-step.*/\1/p' <<<"$log")
@@ -76,9 +77,9 @@ for model in $models; do
       done
       ms=$(awk '{ print $1 }' "$work/after.txt" | median)
       ns=$(awk '{ print $2 }' "$work/after.txt" | median)
-      # The phases of the run whose ms per frame is the median (the first such).
-      phases=$(awk -v m="$ms" '$1 == m { $1 = ""; $2 = ""; sub(/^  /, ""); print; exit }' "$work/after.txt")
-      simulate_once "$bin" "$dir" "$guides" "$threads" >/dev/null  # guides.h5 of this build
+      # The phases from a run of their own (timing them costs about 0.5 us a strand step).
+      phases=$(simulate_once "$bin" "$dir" "$guides" "$threads" --profile_phases=true |
+        awk '{ $1 = ""; $2 = ""; sub(/^  /, ""); print }')
       hair=$(h5ls "$dir/guides.h5/guides/rest_points" | sed 's/.*{\([0-9]*\).*/\1/')
       ghosts=$(h5dump -d /guides/ghost_count "$dir/guides.h5" | sed -n '/DATA {/,/}/p' | sed 's/([0-9]*)://' | grep -o '[0-9]\+' | awk '{ s += $1 } END { print s + 0 }')
       made=$(h5ls "$dir/guides.h5/guides/kind" | sed 's/.*{\([0-9]*\).*/\1/')

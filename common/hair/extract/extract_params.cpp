@@ -20,7 +20,7 @@ void declare_reading_and_paint_params(ParamSet& params, ExtractStageParams& valu
              {"auto", "assimp"});
   params.add("max_mesh_triangles", values.max_mesh_triangles,
              "the most triangles a hair or body mesh may have (a polygon of n corners counts "
-             "n - 2); a larger mesh is refused before it is processed (extract needs about 0.7 kB "
+             "n - 2); a larger mesh is refused before it is processed (extract needs about 0.6 kB "
              "a triangle)",
              ParamRange::at_least(1));
   params.add("max_quad_corner_deviation_deg", p.max_quad_corner_deviation_deg,

@@ -13,7 +13,7 @@ struct ExtractStageParams {
   ExtractParams extract;
   std::string mesh_reader = "auto";  ///< "auto" or "assimp"; see MeshReader
   /// The most triangles a hair or body mesh may have (docs/extract.md, "Limits": extract
-  /// needs about 0.7 kB and 0.1 ms a triangle, docs/bench/stage_resources.md).
+  /// needs about 0.6 kB and 0.03 ms a triangle, docs/bench/stage_resources_big.md).
   int max_mesh_triangles = 4'000'000;
 
   MeshReader reader() const {

@@ -56,6 +56,7 @@ struct SimulationParams {
                                     ///< points are pushed out along the field's gradient)
   double friction = 0.3;            ///< Coulomb friction against the body
   bool body_collisions = true;      ///< false: hair passes through the body (benchmarks)
+  bool profile_phases = false;      ///< time each phase of every strand step (the log)
   double repulsion_m_s2 = 1.0;      ///< hair-hair repulsion strength (0: none)
   double density_cell_h = 0.08;     ///< cell of the hair density grid
   /// The repulsion is worked out at the first step of every this many frames (from the

@@ -36,6 +36,7 @@ SimulationLoop::SimulationLoop(const SimulationScene& scene, const HeadMotion& m
                 params.bundle_damping_ratio),
       shares_(running_.size()),
       spring_j_(running_.size()) {
+  for (StrandStepper& stepper : steppers_) stepper.time_phases(params.profile_phases);
   if (cohesion_.active())
     spdlog::info("{}: {} tails hold together ({} guides, and {} of other clusters hanging in them)",
                  scene.source, cohesion_.bundle_count(), cohesion_.guide_count(),
@@ -87,7 +88,7 @@ void SimulationLoop::start() {
 
 void SimulationLoop::run() {
   {
-    PhaseTimer timer(profile_.loop_s);
+    PhaseTimer timer(&profile_.loop_s);
     run_frames();
   }
   result_.profile = profile_;
@@ -100,7 +101,7 @@ void SimulationLoop::run_frames() {
   for (int32_t frame = 1; frame < result_.frame_count; ++frame) {
     RigidTransform pose = motion_.at(frame / params_.fps);
     if (result_.settled_at_frame >= 0) {
-      PhaseTimer timer(profile_.frames_s);
+      PhaseTimer timer(serial_phase(&SimulationProfile::frames_s));
       record_frame(frame, pose);
       FrameStatistics stats = result_.statistics.back();
       stats.time_s = frame / params_.fps;
@@ -111,7 +112,7 @@ void SimulationLoop::run_frames() {
     integrate_frame(frame, pose);
     FrameStatistics stats;
     {
-      PhaseTimer timer(profile_.frames_s);
+      PhaseTimer timer(serial_phase(&SimulationProfile::frames_s));
       record_frame(frame, pose);
       stats = frame_statistics(frame / params_.fps, pose);
       result_.statistics.push_back(stats);
@@ -143,7 +144,7 @@ void SimulationLoop::integrate_frame(int32_t frame, const RigidTransform& pose) 
     const bool repel = params_.repulsion_m_s2 > 0 && step == 0 &&
                        (frame - 1) % params_.repulsion_interval_frames == 0;
     if (repel) {
-      PhaseTimer timer(profile_.hair_hair_s);
+      PhaseTimer timer(serial_phase(&SimulationProfile::hair_hair_s));
       gather_hair();
       density_.build(hair_positions_);
     }
@@ -151,7 +152,7 @@ void SimulationLoop::integrate_frame(int32_t frame, const RigidTransform& pose) 
     // stiffness held to 1 / dt^2 so that a long step stays stable): the centre lines of
     // the members' polylines, which each strand sampled at the end of its last step.
     if (cohesion_.active()) {
-      PhaseTimer timer(profile_.bundles_s);
+      PhaseTimer timer(serial_phase(&SimulationProfile::bundles_s));
       cohesion_.update_centres();
     }
     // A few guides are not worth a thread team's barrier per step (on a busy machine a
@@ -192,7 +193,7 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
     }
     StrandStepper& stepper = steppers_[static_cast<size_t>(omp_get_thread_num())];
     if (repel) {
-      PhaseTimer timer(stepper.profile().hair_hair_s);
+      PhaseTimer timer(stepper.phase(&SimulationProfile::hair_hair_s));
       for (int32_t i = 0; i < model.hair_count(); ++i)
         strand.acceleration_m_s2[static_cast<size_t>(model.hair_particle[static_cast<size_t>(i)])] =
             repulsion(strand, i, from);
@@ -201,7 +202,7 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
     const Eigen::Matrix3d head_rotation = to.rotation.toRotationMatrix();
     const std::vector<Vec3>* acceleration = &strand.acceleration_m_s2;
     if (cohesion_.active() && cohesion_.member(g)) {
-      PhaseTimer timer(stepper.profile().bundles_s);
+      PhaseTimer timer(stepper.phase(&SimulationProfile::bundles_s));
       std::vector<Vec3>& applied = applied_m_s2_[g];
       cohesion_.acceleration(g, running_, dt_s_, applied);
       for (size_t k = 0; k < applied.size(); ++k) applied[k] += strand.acceleration_m_s2[k];
@@ -217,7 +218,7 @@ void SimulationLoop::step_strand(size_t g, int step, bool repel, const RigidTran
       x[k] = to.apply(model.rest_m[k]);
     }
     if (cohesion_.active()) {  // for the next step's centre
-      PhaseTimer timer(stepper.profile().bundles_s);
+      PhaseTimer timer(stepper.phase(&SimulationProfile::bundles_s));
       cohesion_.sample(g, running_);
     }
     // Not finite, or diverged so far that it soon will be.

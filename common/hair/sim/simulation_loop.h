@@ -95,6 +95,10 @@ class SimulationLoop {
   /// settled head).
   int32_t pending_energy_frame_ = -1;
   SimulationProfile profile_;  ///< the serial phases' time; the steppers hold the rest
+  /// `seconds` of profile_ where the phases are timed, else none.
+  double* serial_phase(double SimulationProfile::*seconds) {
+    return params_.profile_phases ? &(profile_.*seconds) : nullptr;
+  }
 };
 
 }  // namespace hair

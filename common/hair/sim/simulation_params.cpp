@@ -101,6 +101,10 @@ void declare_simulation_params(ParamSet& params, SimulateStageParams& values) {
   params.add("by_style", p.by_style,
              "simulate each cluster by its style (--by_style=false: all as normal hair, the "
              "style rules off; for benchmarks)");
+  params.add("profile_phases", p.profile_phases,
+             "time every phase of every strand step and log where the frames' time went "
+             "(springs, solve, limits, collisions, hair-hair, bundles, frames); costs about "
+             "0.5 microseconds a strand step");
 }
 
 }  // namespace hair

@@ -35,7 +35,9 @@ std::string SimulationProfile::summary() const {
   for (const auto& phase : phases) total += phase.second;
   std::string text;
   char part[64];
+  if (!(total > 0)) text = "phases not timed (profile_phases)";
   for (const auto& phase : phases) {
+    if (!(total > 0)) break;
     std::snprintf(part, sizeof part, "%s%s %.1f%%", text.empty() ? "" : ", ", phase.first,
                   total > 0 ? 100 * phase.second / total : 0.0);
     text += part;

@@ -1,5 +1,7 @@
 #pragma once
 // Where a simulation's time goes, by phase (bench/simulate_scaling.sh prints it). The
+// phases are timed only when asked (SimulationParams::profile_phases: two clock reads per
+// phase and strand step); the frames' wall time and the particle-steps always are. The
 // per-strand phases are summed over the threads that ran them (thread-seconds); the
 // serial ones are wall time of the one thread that runs them.
 
@@ -24,23 +26,27 @@ struct SimulationProfile {
   SimulationProfile& operator+=(const SimulationProfile& other);
   /// Wall time per particle and substep, in nanoseconds (0 before any step).
   double ns_per_particle_step() const;
-  /// "springs 31%, solve 22%, ..." of the phases' sum, and the ns per particle-step.
+  /// "springs 31%, solve 22%, ..." of the phases' sum (or that they were not timed), and
+  /// the ns per particle-step.
   std::string summary() const;
 };
 
-/// Adds the time from its construction to its end to `seconds`.
+/// Adds the time from its construction to its end to `*seconds`; with none, reads no clock.
 class PhaseTimer {
  public:
-  explicit PhaseTimer(double& seconds)
-      : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+  explicit PhaseTimer(double* seconds) : seconds_(seconds) {
+    if (seconds_) start_ = std::chrono::steady_clock::now();
+  }
   ~PhaseTimer() {
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (seconds_)
+      *seconds_ +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
   PhaseTimer(const PhaseTimer&) = delete;
   PhaseTimer& operator=(const PhaseTimer&) = delete;
 
  private:
-  double& seconds_;
+  double* seconds_;
   std::chrono::steady_clock::time_point start_;
 };
 

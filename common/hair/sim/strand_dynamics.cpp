@@ -275,7 +275,7 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     solve_velocities(strand, material, acceleration_m_s2, uniform_acceleration_m_s2, anchors, dt_s,
                      state, support_rotation);
   } else {
-    PhaseTimer timer(profile_.springs_s);
+    PhaseTimer timer(phase(&SimulationProfile::springs_s));
     start_spring_energy_j_ = strand_spring_energy(strand, material, x);
   }
 
@@ -291,7 +291,7 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
   //     out of the body flings the rest of the strand, and hair on the shoulders never
   //     comes to rest.)
   {
-    PhaseTimer timer(profile_.limits_s);
+    PhaseTimer timer(phase(&SimulationProfile::limits_s));
     start_.assign(x.begin(), x.end());
     for (int32_t q = 0; q < count; ++q) x[static_cast<size_t>(q)] += dt_s * v[static_cast<size_t>(q)];
     limit_strain(strand, material, x);
@@ -302,7 +302,7 @@ void StrandStepper::step(const AltitudeStrand& strand, const StrandMaterial& mat
     }
   }
   if (collider) {
-    PhaseTimer timer(profile_.collisions_s);
+    PhaseTimer timer(phase(&SimulationProfile::collisions_s));
     collide_with_body(strand, material, *collider, friction, dt_s, state);
   }
 }
@@ -319,7 +319,7 @@ void StrandStepper::solve_velocities(const AltitudeStrand& strand, const StrandM
   const std::vector<Vec3>& x = state.position_m;
   std::vector<Vec3>& v = state.velocity_m_s;
   {
-    PhaseTimer timer(profile_.springs_s);
+    PhaseTimer timer(phase(&SimulationProfile::springs_s));
     BandSystem::reset(band_, rhs_, count, first_free);
     BandSystem system(band_, rhs_, first_free);
     add_inertia(system, strand, material, acceleration_m_s2, uniform_acceleration_m_s2, dt_s, v,
@@ -327,7 +327,7 @@ void StrandStepper::solve_velocities(const AltitudeStrand& strand, const StrandM
     start_spring_energy_j_ = add_springs(system, strand, material, dt_s, x, v);
     if (first_free == 0) add_anchor_springs(system, strand, material, anchors, dt_s, x);
   }
-  PhaseTimer timer(profile_.solve_s);
+  PhaseTimer timer(phase(&SimulationProfile::solve_s));
   int info = solve_banded_spd(band_, rhs_, n, kBandwidth);
   if (info != 0)
     throw std::runtime_error("strand step: band matrix not positive definite (minor " +

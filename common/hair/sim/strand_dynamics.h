@@ -130,6 +130,12 @@ class StrandStepper {
   /// Time this stepper's steps spent in each of their phases, and the particle-steps
   /// (springs_s, solve_s, limits_s, collisions_s, particle_steps; the rest is the caller's).
   SimulationProfile& profile() { return profile_; }
+  /// Whether the steps time their phases (else they count particle-steps only).
+  void time_phases(bool on) { timed_ = on ? &profile_ : nullptr; }
+  /// `seconds` of this stepper's profile where the phases are timed, else none.
+  double* phase(double SimulationProfile::*seconds) {
+    return timed_ ? &(timed_->*seconds) : nullptr;
+  }
 
  private:
   /// The implicit system of the step over the free particles, solved: their velocities.
@@ -145,6 +151,7 @@ class StrandStepper {
 
   double start_spring_energy_j_ = 0;
   SimulationProfile profile_;
+  SimulationProfile* timed_ = nullptr;  ///< &profile_ where the phases are timed
   std::vector<double> band_;  ///< LAPACK upper band storage, column-major
   std::vector<double> rhs_;
   std::vector<Eigen::Vector3d> start_;         ///< positions at the start of the step

@@ -259,6 +259,7 @@ TEST(HairSimulation, TheProfileCountsEveryParticleStepAndSplitsTheFramesTime) {
   for (bool collisions : {true, false}) {
     SimulationParams params = test_params();
     params.body_collisions = collisions;
+    params.profile_phases = true;
     SimulationResult result = simulate_hair(scene, motion, params);
     // Every guide (the wisp centre too) steps its hair and ghost particles every substep of
     // every integrated frame.
@@ -285,6 +286,16 @@ TEST(HairSimulation, TheProfileCountsEveryParticleStepAndSplitsTheFramesTime) {
     EXPECT_NEAR(profile.ns_per_particle_step(),
                 1e9 * profile.loop_s / static_cast<double>(profile.particle_steps), 1e-9);
     EXPECT_NE(profile.summary().find("ns per particle-step"), std::string::npos);
+    // Not asked, the phases are not timed; the frames' time and the steps still are.
+    params.profile_phases = false;
+    const SimulationProfile untimed = simulate_hair(scene, motion, params).profile;
+    EXPECT_EQ(untimed.particle_steps, profile.particle_steps);
+    EXPECT_GT(untimed.loop_s, 0.0);
+    EXPECT_EQ(untimed.springs_s + untimed.solve_s + untimed.limits_s + untimed.collisions_s +
+                  untimed.hair_hair_s + untimed.bundles_s + untimed.frames_s,
+              0.0);
+    EXPECT_EQ(untimed.summary().rfind("phases not timed (profile_phases); ", 0), 0u)
+        << untimed.summary();
   }
 }
 
