@@ -44,12 +44,18 @@ TEST(TriangleMeshDistance, ClosestPointOnTriangleRegions) {
   EXPECT_TRUE(closest_point_on_triangle({1, 1, 0}, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
 }
 
-TEST(PointIndex, NeighboursMatchBruteForceNearestFirst) {
-  std::mt19937 random(3);
+/// `count` points drawn uniformly in the unit cube from `random`.
+Points3f random_unit_points(Eigen::Index count, std::mt19937& random) {
   std::uniform_real_distribution<float> unit(0, 1);
-  Points3f points(500, 3);
+  Points3f points(count, 3);
   for (Eigen::Index i = 0; i < points.rows(); ++i)
     points.row(i) << unit(random), unit(random), unit(random);
+  return points;
+}
+
+TEST(PointIndex, NeighboursMatchBruteForceNearestFirst) {
+  std::mt19937 random(3);
+  const Points3f points = random_unit_points(500, random);
   PointIndex index(points);
   Eigen::Vector3f query(0.5f, 0.5f, 0.5f);
   std::vector<int32_t> within = index.within(query, 0.2f);
@@ -95,9 +101,7 @@ TEST(PointIndex, VisitingTheFirstFewWithinARadiusFollowsTheFullListTiesIncluded)
 TEST(PointIndex, UnorderedAndAnyWithinAgreeWithWithin) {
   std::mt19937 random(5);
   std::uniform_real_distribution<float> unit(0, 1);
-  Points3f points(400, 3);
-  for (Eigen::Index i = 0; i < points.rows(); ++i)
-    points.row(i) << unit(random), unit(random), unit(random);
+  const Points3f points = random_unit_points(400, random);
   PointIndex index(points);
   for (int q = 0; q < 50; ++q) {
     const Eigen::Vector3f query(unit(random), unit(random), unit(random));
