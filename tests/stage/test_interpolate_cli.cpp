@@ -6,6 +6,7 @@
 // (exit 2, one line, no output, an existing output untouched).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -381,6 +382,77 @@ TEST_F(InterpolateCli, ExportsKeepThePoints) {
   ASSERT_EQ(over.exit_code, 0) << over.err;
   EXPECT_EQ(hair::test::parse_usda(read_file_bytes(folder / "over.usda")).metadata["subLayers"],
             "braid.usda");
+}
+
+/// The largest distance of a point of `full` from the polyline of the same strand in
+/// `kept`, metres (brute force over each strand's segments).
+double largest_distance_to(const hair::StrandSet& kept, const hair::StrandSet& full) {
+  double largest = 0;
+  for (int64_t s = 0; s < full.strand_count(); ++s)
+    for (int64_t i = full.offsets[static_cast<size_t>(s)];
+         i < full.offsets[static_cast<size_t>(s) + 1]; ++i) {
+      const Eigen::Vector3d p = hair::point_of(full.points, i);
+      double nearest = INFINITY;
+      for (int64_t k = kept.offsets[static_cast<size_t>(s)];
+           k + 1 < kept.offsets[static_cast<size_t>(s) + 1]; ++k) {
+        const Eigen::Vector3d a = hair::point_of(kept.points, k),
+                              b = hair::point_of(kept.points, k + 1);
+        const double t =
+            std::clamp((p - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-30), 0.0, 1.0);
+        nearest = std::min(nearest, (a + t * (b - a) - p).norm());
+      }
+      largest = std::max(largest, nearest);
+    }
+  return largest;
+}
+
+TEST_F(InterpolateCli, ExportsWithinAToleranceKeepTheShapeWithFewerPoints) {
+  // ponytail01's frames 2 to 4 with --tolerance_m 0.5 mm: every strand, its root and its
+  // tip, the same points in every frame, far fewer of them, and each frame's strands
+  // within about the tolerance of the written ones. (The points are chosen on the rest
+  // shape and on each frame written; a point dropped is within the tolerance of the
+  // polyline one of them needs, and so within twice it of the finer one written.)
+  Model m = model("ponytail01");
+  fs::path folder = directory() / "exports_tolerance";
+  fs::create_directories(folder);
+  const double tolerance_m = 0.0005;
+  auto result =
+      run_command(kBin / "hair-export",
+                  {m.frames.string(), "--frames", "2:5", "--obj", (folder / "obj").string(),
+                   "--usda", (folder / "groom.usda").string(), "--tolerance_m", "0.0005"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find("points kept"), std::string::npos) << result.err;
+  hair::h5::File file = hair::h5::File::open_read_only(m.frames);
+  hair::FramesFile frames = hair::read_frames_file(file);
+  std::vector<int64_t> offsets;
+  for (int64_t frame = 2; frame < 5; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04lld.obj", static_cast<long long>(frame));
+    hair::StrandSet written = hair::read_obj_polylines(folder / "obj" / name);
+    hair::StrandSet full = frames.rest;
+    full.points = hair::read_frame_points(file, frame);
+    ASSERT_EQ(written.strand_count(), full.strand_count()) << name;
+    EXPECT_LT(written.point_count(), full.point_count() / 2) << name;
+    if (offsets.empty()) offsets = written.offsets;
+    EXPECT_EQ(written.offsets, offsets) << name << ": the same points in every frame";
+    for (int64_t s = 0; s < full.strand_count(); s += 97) {
+      EXPECT_EQ(written.strand(s).row(0), full.strand(s).row(0)) << name << ", strand " << s;
+      EXPECT_EQ(written.strand(s).bottomRows(1), full.strand(s).bottomRows(1)) << name;
+    }
+    EXPECT_LE(largest_distance_to(written, full), 2 * tolerance_m + 1e-6) << name;
+  }
+  // The groom layer has the same curves.
+  hair::test::UsdaLayer layer = hair::test::parse_usda(read_file_bytes(folder / "groom.usda"));
+  const std::vector<double>& counts = layer.arrays["curveVertexCounts"];
+  ASSERT_EQ(static_cast<int64_t>(counts.size()), frames.rest.strand_count());
+  for (size_t s = 0; s < counts.size(); ++s)
+    ASSERT_EQ(counts[s], static_cast<double>(offsets[s + 1] - offsets[s])) << s;
+  // A negative tolerance is refused on one line.
+  auto refused = run_command(
+      kBin / "hair-export",
+      {m.frames.string(), "--usda", (folder / "no.usda").string(), "--tolerance_m", "-1"});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_FALSE(fs::exists(folder / "no.usda"));
 }
 
 TEST_F(InterpolateCli, RendersAStillAndAVideo) {

@@ -4,14 +4,17 @@
 // frame) and cyHair .hair (one frame).
 // docs/interpolate.md describes the formats and the mapping to the groom conventions.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <numbers>
 
 #include "hair/core/error.h"
 #include "hair/core/frame_range.h"
 #include "hair/export/strand_export.h"
+#include "hair/geom/strand_simplify.h"
 #include "hair/h5/file.h"
 #include "hair/interp/frames_io.h"
 
@@ -99,6 +102,13 @@ int main(int argc, char** argv) {
   app.add_option("--width_m", width_m,
                  "strand width at the root, metres (a third of it at the tip)")
       ->check(CLI::PositiveNumber);
+  double tolerance_m = 0;
+  CLI::Option* tolerance = app.add_option(
+      "--tolerance_m", tolerance_m,
+      "keep only the points each strand needs to stay within this distance of its shape at "
+      "rest and in every frame written, metres (Douglas-Peucker on each, the same points in "
+      "every frame; default: every point)");
+  tolerance->check(CLI::NonNegativeNumber);
   try {
     app.parse(argc, argv);
     if (!animation_path.empty() && usda_path.empty() == over_path.empty())
@@ -121,7 +131,35 @@ int main(int argc, char** argv) {
     hair::FrameRange range = frames_text.empty() ? hair::FrameRange{frames.first_frame, last}
                                                  : hair::parse_frame_range(frames_text, last);
     std::vector<int64_t> rows = rows_of(frames, range, input_path);
+    // The points written: every one, or those the tolerance keeps (chosen on the rest
+    // shape, the same in every frame).
+    std::vector<int64_t> kept;
     hair::StrandSet strands = frames.rest;
+    double largest_deviation_m = 0;
+    if (tolerance->count() > 0) {
+      // The points the rest shape needs and those each frame written needs: motion bends
+      // hair where it was straight.
+      kept = hair::rows_within_tolerance(frames.rest, tolerance_m);
+      if (!animation_path.empty() || !obj_dir.empty() || !hair_path.empty()) {
+        hair::StrandSet shape;
+        shape.offsets = frames.rest.offsets;
+        for (int64_t row : rows) {
+          shape.points = hair::read_frame_points(file, row);
+          std::vector<int64_t> needed = hair::rows_within_tolerance(shape, tolerance_m), both;
+          std::set_union(kept.begin(), kept.end(), needed.begin(), needed.end(),
+                         std::back_inserter(both));
+          kept = std::move(both);
+        }
+      }
+      strands = hair::select_points(frames.rest, kept);
+      largest_deviation_m = hair::largest_deviation(frames.rest.points, kept);
+    }
+    const auto frame_points = [&](int64_t row) {
+      hair::Points3f points = hair::read_frame_points(file, row);
+      if (kept.empty()) return points;
+      largest_deviation_m = std::max(largest_deviation_m, hair::largest_deviation(points, kept));
+      return hair::select_rows(points, kept);
+    };
     const std::string note = "from " + input_path + ", motion " + frames.motion;
     std::vector<float> widths = tapered_widths(strands, width_m);
 
@@ -159,12 +197,12 @@ int main(int argc, char** argv) {
           fs::relative(fs::absolute(groom), fs::absolute(animation_path).parent_path())
               .generic_string();
       hair::write_usda_animation(animation_path, groom_layer, frames.fps, note, codes,
-                                 [&](size_t k) { return hair::read_frame_points(file, rows[k]); });
+                                 [&](size_t k) { return frame_points(rows[k]); });
     }
     if (!obj_dir.empty()) {
       fs::create_directories(obj_dir);
       for (int64_t row : rows) {
-        strands.points = hair::read_frame_points(file, row);
+        strands.points = frame_points(row);
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04lld.obj",
                       static_cast<long long>(frames.index[static_cast<size_t>(row)]));
@@ -176,10 +214,18 @@ int main(int argc, char** argv) {
     if (!hair_path.empty()) {
       int64_t which = frame < 0 ? frames.first_frame : frame;
       std::vector<int64_t> one = rows_of(frames, {which, which + 1}, input_path);
-      strands.points = hair::read_frame_points(file, one.front());
+      strands.points = frame_points(one.front());
       hair::write_cyhair(hair_path, strands, widths,
                          "hairstyle frame " + std::to_string(which) + ", metres");
     }
+    if (tolerance->count() > 0)
+      std::cerr << "hair-export: " << kept.size() << " of " << frames.rest.point_count()
+                << " points kept (" << (100.0 * static_cast<double>(kept.size()) /
+                                        static_cast<double>(std::max<int64_t>(
+                                            1, frames.rest.point_count())))
+                << "%) within " << tolerance_m
+                << " m of the rest shape and each frame written; the dropped ones lie at most "
+                << largest_deviation_m << " m from the kept strands\n";
   } catch (const hair::Error& e) {
     std::cerr << "hair-export: error: " << e.what() << "\n";
     return e.exit_code();
