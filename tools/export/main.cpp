@@ -106,8 +106,8 @@ int main(int argc, char** argv) {
   CLI::Option* tolerance = app.add_option(
       "--tolerance_m", tolerance_m,
       "keep only the points each strand needs to stay within this distance of its shape at "
-      "rest and in every frame written, metres (Douglas-Peucker on each, the same points in "
-      "every frame; default: every point)");
+      "rest and in every frame of FRAMES_H5, metres (Douglas-Peucker on each; the same points "
+      "in every frame and every export of the file; default: every point)");
   tolerance->check(CLI::NonNegativeNumber);
   try {
     app.parse(argc, argv);
@@ -137,19 +137,18 @@ int main(int argc, char** argv) {
     hair::StrandSet strands = frames.rest;
     double largest_deviation_m = 0;
     if (tolerance->count() > 0) {
-      // The points the rest shape needs and those each frame written needs: motion bends
-      // hair where it was straight.
+      // The points the rest shape needs and those every frame of the file needs (motion
+      // bends hair where it lay straight): they depend on the file and the tolerance
+      // only, so a groom layer and an animation over it exported apart fit each other.
       kept = hair::rows_within_tolerance(frames.rest, tolerance_m);
-      if (!animation_path.empty() || !obj_dir.empty() || !hair_path.empty()) {
-        hair::StrandSet shape;
-        shape.offsets = frames.rest.offsets;
-        for (int64_t row : rows) {
-          shape.points = hair::read_frame_points(file, row);
-          std::vector<int64_t> needed = hair::rows_within_tolerance(shape, tolerance_m), both;
-          std::set_union(kept.begin(), kept.end(), needed.begin(), needed.end(),
-                         std::back_inserter(both));
-          kept = std::move(both);
-        }
+      hair::StrandSet shape;
+      shape.offsets = frames.rest.offsets;
+      for (int64_t row = 0; row < frames.frame_count(); ++row) {
+        shape.points = hair::read_frame_points(file, row);
+        std::vector<int64_t> needed = hair::rows_within_tolerance(shape, tolerance_m), both;
+        std::set_union(kept.begin(), kept.end(), needed.begin(), needed.end(),
+                       std::back_inserter(both));
+        kept = std::move(both);
       }
       strands = hair::select_points(frames.rest, kept);
       largest_deviation_m = hair::largest_deviation(frames.rest.points, kept);
@@ -224,8 +223,9 @@ int main(int argc, char** argv) {
                                         static_cast<double>(std::max<int64_t>(
                                             1, frames.rest.point_count())))
                 << "%) within " << tolerance_m
-                << " m of the rest shape and each frame written; the dropped ones lie at most "
-                << largest_deviation_m << " m from the kept strands\n";
+                << " m of the rest shape and each frame; the dropped ones lie at most "
+                << largest_deviation_m << " m from the kept strands in the rest shape and the "
+                << "frames written\n";
   } catch (const hair::Error& e) {
     std::cerr << "hair-export: error: " << e.what() << "\n";
     return e.exit_code();
