@@ -51,15 +51,21 @@ def _bin_folder(binary_path):
     return os.path.dirname(os.path.realpath(binary_path)) if binary_path else ""
 
 
+def _preferred(preference, exists, what, kind, setting):
+    """The path a preference names (~ expanded); MissingTool naming the preference's
+    `setting` where `exists` says there is no such `kind`."""
+    path = os.path.expanduser(preference)
+    if not exists(path):
+        raise MissingTool(f"hairstyle: {what} {path}: no such {kind} (Edit > "
+                          f"Preferences > Add-ons > hairstyle > {setting})")
+    return path
+
+
 def find_style_model(preference, classify_path):
     """The style model file: the preference if set, else style_extended.yml in the models/
     folder of the checkout or installation the binaries (or this add-on) come from."""
     if preference:
-        path = os.path.expanduser(preference)
-        if not os.path.isfile(path):
-            raise MissingTool(f"hairstyle: style model {path}: no such file (Edit > "
-                              f"Preferences > Add-ons > hairstyle > Style model)")
-        return path
+        return _preferred(preference, os.path.isfile, "style model", "file", "Style model")
     bin_folder = _bin_folder(classify_path)
     candidates = [os.path.join(bin_folder, "..", "..", "models", STYLE_MODEL_NAME),  # build/bin
                   os.path.join(bin_folder, "..", "share", "hairstyle", "models", STYLE_MODEL_NAME),
@@ -78,11 +84,7 @@ def find_parameters(preference, binary_path):
     preference if set, else the checkout's beside the binaries or this add-on; "" when
     there is none (the stages' own defaults, which the default files equal)."""
     if preference:
-        path = os.path.expanduser(preference)
-        if not os.path.isdir(path):
-            raise MissingTool(f"hairstyle: parameter folder {path}: no such folder (Edit > "
-                              f"Preferences > Add-ons > hairstyle > Parameters)")
-        return path
+        return _preferred(preference, os.path.isdir, "parameter folder", "folder", "Parameters")
     for candidate in (os.path.join(_bin_folder(binary_path), "..", "..", "pipelines", "default"),
                       os.path.join(_CHECKOUT, "pipelines", "default")):
         if os.path.isfile(os.path.join(candidate, "extract.toml")):
