@@ -49,9 +49,11 @@ int main(int argc, char** argv) {
         stats.ids_and_texture_overruled_head_distance);
     spdlog::info(
         "{}: rails chosen by chain length in {} regions, texture axis {}, painted flow {} "
-        "({} of them across the longer chains); {} patches traced along the paint",
+        "({} of them across the longer chains), across rings round the head {}; {} patches "
+        "traced along the paint",
         hair_path, stats.regions_by_along_rule[0], stats.regions_by_along_rule[1],
         stats.regions_by_along_rule[2], stats.regions_turned_by_paint,
+        stats.regions_by_along_rule[3],
         stats.patches_traced_along_paint);
     if (const int64_t painted = result.painted_flow.painted_face_count(); painted > 0) {
       int64_t segments = 0;

@@ -4,10 +4,12 @@
 // painted flow (against the nearest face, and against the card each strand follows), and
 // the strands per cluster (docs/grow.md). Prints one Markdown table row,
 // or the header with --header; --clusters prints a table of the strands per cluster,
-// --by-rule one of how the grown segments follow the flow by how each was grown.
+// --by-rule one of how the grown segments follow the flow by how each was grown, and of
+// the air chords by the rule that grew them.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 #include "hair/core/error.h"
@@ -94,11 +96,20 @@ void print_flow_by_rule(const std::string& label, const hair::FlowByRule& tally)
   print_tally_row("bridges between strands", tally.by_rule[3], all_judged);
 }
 
+/// The kinked strands' indices, one a line, to `path` (nothing when it is empty).
+void write_kinked(const std::string& path, const hair::KinkMeasures& kinks) {
+  if (path.empty()) return;
+  std::ofstream out(path);
+  for (const int64_t s : kinks.kinked) out << s << "\n";
+  out.flush();
+  if (!out) throw hair::Error::runtime(path, "cannot write the kinked strands");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app("Measure grown strands against the hair mesh and the body.", "hair-grow-report");
-  std::string extract_path, strands_path, name;
+  std::string extract_path, strands_path, name, kinked_path;
   int samples = 20000;
   bool header = false, clusters = false, by_rule = false;
   app.add_flag("--header", header, "print the table's header and exit");
@@ -107,10 +118,15 @@ int main(int argc, char** argv) {
   app.add_flag("--by-rule", by_rule,
                "print a table of how the grown segments run along the flow (as 'grown along "
                "flow' judges them) by how each was grown: along the field (and its first "
-               "steps), along input strands, bridges")
+               "steps), along input strands, bridges; then the air chords by the rule that "
+               "grew most of each one's stretch through air")
       ->excludes("--clusters");
   app.add_option("EXTRACT_H5", extract_path, "extract.h5 the strands were grown from");
   app.add_option("STRANDS_H5", strands_path, "strands.h5 from the grow stage");
+  app.add_option("--kinked", kinked_path,
+                 "also write the index of every kinked strand (a hairpin or an air chord), one "
+                 "a line, to this file")
+      ->excludes("--clusters");
   app.add_option("--name", name, "first column (default: the strands file)");
   app.add_option("--samples", samples, "points sampled on the hair mesh")
       ->check(CLI::Range(100, 10'000'000));
@@ -174,6 +190,30 @@ int main(int argc, char** argv) {
                                                        hair::kFlowAgreementAngleDeg, judged.near_m),
                      hair::h5::read_enum_values(hair::h5::File::open_read_only(strands_path),
                                                 "/strands/point_rule")));
+      // The air chords (kinked strands' second kind) by the rule that grew them.
+      const std::vector<int8_t> point_rule = hair::h5::read_enum_values(
+          hair::h5::File::open_read_only(strands_path), "/strands/point_rule");
+      const hair::TriangleMeshDistance body_distance(body.vertices, body.triangles);
+      const hair::KinkMeasures kinks = hair::measure_kinks(
+          grown.strands, hair::TriangleMeshDistance(hair_vertices, hair_triangles),
+          &body_distance, grown.head_height_m, {}, &point_rule);
+      const auto share = [&](int64_t count) {
+        return 100.0 * static_cast<double>(count) /
+               static_cast<double>(std::max<int64_t>(1, kinks.strands));
+      };
+      std::printf(
+          "\n| %s: air chords by the rule that grew most of the stretch | strands | share of "
+          "all strands |\n|---|---:|---:|\n",
+          label.c_str());
+      const char* names[] = {"the root", "along the field", "along input strands",
+                             "bridges between strands"};
+      for (size_t r = 1; r < 4; ++r)
+        std::printf("| %s | %lld | %.2f%% |\n", names[r],
+                    static_cast<long long>(kinks.air_chord_strands_by_rule[r]),
+                    share(kinks.air_chord_strands_by_rule[r]));
+      std::printf("| all | %lld | %.2f%% |\n", static_cast<long long>(kinks.air_chord_strands),
+                  share(kinks.air_chord_strands));
+      write_kinked(kinked_path, kinks);
       return 0;
     }
     hair::GrowMeasures m = hair::measure_grown_strands(
@@ -229,6 +269,7 @@ int main(int argc, char** argv) {
     const hair::KinkMeasures kinks = hair::measure_kinks(
         grown.strands, hair::TriangleMeshDistance(hair_vertices, hair_triangles), &body_distance,
         grown.head_height_m);
+    write_kinked(kinked_path, kinks);
     const auto strand_share = [&](int64_t count) {
       return 100.0 * static_cast<double>(count) /
              static_cast<double>(std::max<int64_t>(1, kinks.strands));

@@ -24,6 +24,15 @@ struct ExtractParams {
   /// Ratio of mean chain lengths of the two edge families above which the longer
   /// family is taken as running along the hair, whatever the texture says.
   double along_length_ratio = 1.5;
+  /// Hair does not go round the head: before chain length, a family whose chains run round
+  /// the head's vertical axis on at least this share of their length...
+  double along_circling_min_share = 0.7;
+  /// ...winding round it by at least this much on average (degrees), is a shell's rings;
+  /// the other family is the rails when it runs round the axis on at most 1 -
+  /// along_circling_min_share of its length...
+  double along_circling_min_sweep_deg = 120;
+  /// ...and its chains are at least this long (H): strands, not a wound braid's width.
+  double along_circling_other_min_length_h = 0.25;
   /// Whether the painted flow chooses rails, traces patches and orients strands; false
   /// reads the mesh as if it had no textures (the flow is still measured and written).
   bool paint_guides_strands = true;
@@ -105,6 +114,7 @@ enum class AlongRule : int8_t {
   chain_length = 0,  ///< the family with clearly longer chains
   texture_axis = 1,  ///< the texture axis the mesh's clear regions run along
   painted_flow = 2,  ///< the family that runs along the strokes painted on its faces
+  across_rings = 3,  ///< the family across the other, which circles the head (rings)
 };
 
 /// Counts for the log and the closing report.
@@ -116,7 +126,7 @@ struct ExtractStats {
   int64_t fragments_dropped = 0;  ///< along-chains too short to be rails
   int64_t family_conflicts = 0;
   std::array<int64_t, 7> groups_by_rule{};         ///< indexed by OrientationRule
-  std::array<int64_t, 3> regions_by_along_rule{};  ///< indexed by AlongRule
+  std::array<int64_t, 4> regions_by_along_rule{};  ///< indexed by AlongRule
   /// Regions whose rails the paint chose against what chain length alone would choose.
   int64_t regions_turned_by_paint = 0;
   /// Patches cut into strands along the paint (their rails crossed it).

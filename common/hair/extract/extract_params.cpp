@@ -30,6 +30,19 @@ void declare_reading_and_paint_params(ParamSet& params, ExtractStageParams& valu
              "ratio of mean chain lengths of a patch's two edge families above which the "
              "longer runs along the hair whatever the texture says",
              ParamRange::at_least(1));
+  params.add("along_circling_min_share", p.along_circling_min_share,
+             "hair does not go round the head: before chain length, a family whose chains run "
+             "round the head's vertical axis on at least this share of their length...",
+             ParamRange::closed(0.5, 1));
+  params.add("along_circling_min_sweep_deg", p.along_circling_min_sweep_deg,
+             "...winding round it by at least this many degrees on average, is a shell's "
+             "rings, and the other family (running round the axis on at most 1 - "
+             "along_circling_min_share of its length) is the rails...",
+             ParamRange::closed(0, 360));
+  params.add("along_circling_other_min_length_h", p.along_circling_other_min_length_h,
+             "...when its chains are at least this long (H): strands, not the width of a braid "
+             "wound round the head",
+             ParamRange::at_least(0));
   params.add("paint_guides_strands", p.paint_guides_strands,
              "the flow painted in the mesh's textures chooses rails, traces patches whose rails "
              "cross it and orients strands; false reads the mesh as if untextured (the flow is "

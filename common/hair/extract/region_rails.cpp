@@ -92,13 +92,30 @@ std::optional<double> share_true(const std::vector<bool>& observations) {
 }
 
 std::vector<std::vector<int>> along_families(
-    const std::vector<PatchTopology>& topologies,
-    const std::vector<std::vector<std::array<FamilyPaint, 2>>>& paint, const ExtractParams& params,
+    const Points3f& vertices, const std::vector<PatchTopology>& topologies,
+    const std::vector<std::vector<std::array<FamilyPaint, 2>>>& paint,
+    const Eigen::Vector3d& head_centre, double head_height_m, const ExtractParams& params,
     ExtractStats& stats) {
   constexpr double min_alignment_difference = 0.2;
   auto paint_decides = [&](size_t p, size_t r) {
     return family_along_paint(paint[p][r], params.along_paint_min_judged_share,
                               params.along_paint_min_gap);
+  };
+  CirclingLimits circling;
+  circling.min_circling_share = params.along_circling_min_share;
+  circling.min_sweep_deg = params.along_circling_min_sweep_deg;
+  circling.max_other_circling_share = 1 - params.along_circling_min_share;
+  circling.other_min_length_m = params.along_circling_other_min_length_h * head_height_m;
+  // Where the paint is clear, it says where the hair runs, whatever the mesh's shape.
+  auto across_rings = [&](size_t p, size_t r) {
+    const auto& f = topologies[p].regions[r].families;
+    if (std::min(paint[p][r][0].judged_share, paint[p][r][1].judged_share) >=
+        params.along_paint_min_judged_share)
+      return -1;
+    const Eigen::Vector3d axis = region_axis_direction(vertices, f[0], head_centre);
+    return family_across_rings({family_circling(vertices, f[0], head_centre, axis),
+                                family_circling(vertices, f[1], head_centre, axis)},
+                               circling);
   };
   std::vector<bool> along_is_v;  // clear regions: does the along family follow v?
   for (size_t p = 0; p < topologies.size(); ++p)
@@ -109,6 +126,7 @@ std::vector<std::vector<int>> along_families(
       if (f[0].v_alignment < 0 || std::abs(f[0].v_alignment - f[1].v_alignment) < min_alignment_difference)
         continue;
       int along = paint_decides(p, r);
+      if (along < 0) along = across_rings(p, r);
       if (along < 0 && longer < params.along_length_ratio * shorter) continue;
       if (along < 0) along = f[0].mean_chain_length > f[1].mean_chain_length ? 0 : 1;
       along_is_v.push_back(f[along].v_alignment > f[1 - along].v_alignment);
@@ -135,6 +153,9 @@ std::vector<std::vector<int>> along_families(
         rule = AlongRule::painted_flow;
         chosen = painted;
         if (clear && painted != longer) ++stats.regions_turned_by_paint;
+      } else if (int across = across_rings(p, r); across >= 0) {
+        rule = AlongRule::across_rings;
+        chosen = across;
       } else if (!clear && texture_tells) {
         rule = AlongRule::texture_axis;
         int v_family = f[0].v_alignment > f[1].v_alignment ? 0 : 1;

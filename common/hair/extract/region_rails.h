@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "hair/extract/circling_rails.h"
 #include "hair/extract/extract.h"
 #include "hair/extract/painted_flow.h"
 #include "hair/extract/rail_paint.h"
@@ -35,12 +36,15 @@ std::optional<double> share_true(const std::vector<bool>& observations);
 double rail_length(const Points3f& vertices, const std::vector<int32_t>& rail);
 
 /// Picks the family of each quad region that runs along the hair: where the painted
-/// flow decides (family_along_paint()), the family along the paint; else the family with
-/// clearly longer chains; where the two are alike (square cards, caps), the family that
-/// follows the mesh's texture axis, learnt from the clear regions.
+/// flow decides (family_along_paint()), the family along the paint; else, where the
+/// paint is not clear and one family circles the axis from `head_centre` through the region
+/// (family_across_rings()), the other; else the family with clearly longer chains; where
+/// the two are alike (square cards, caps), the family that follows the mesh's texture
+/// axis, learnt from the clear regions.
 std::vector<std::vector<int>> along_families(
-    const std::vector<PatchTopology>& topologies,
-    const std::vector<std::vector<std::array<FamilyPaint, 2>>>& paint, const ExtractParams& params,
+    const Points3f& vertices, const std::vector<PatchTopology>& topologies,
+    const std::vector<std::vector<std::array<FamilyPaint, 2>>>& paint,
+    const Eigen::Vector3d& head_centre, double head_height_m, const ExtractParams& params,
     ExtractStats& stats);
 
 /// The rails of every region of every patch (the chains of its along family; short

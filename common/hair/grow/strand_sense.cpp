@@ -1,8 +1,12 @@
 #include "hair/grow/strand_sense.h"
 
+#include "hair/core/error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace hair {
@@ -60,35 +64,67 @@ bool AirAroundHair::is_air(const Eigen::Vector3d& point) const {
   return true;
 }
 
-double longest_air_stretch_m(const Points3f& points, const AirAroundHair& air, double step_m) {
-  double longest = 0, stretch = 0;
+AirStretch longest_air_stretch(const Points3f& points, const AirAroundHair& air, double step_m) {
+  AirStretch longest;
+  const size_t segments = points.rows() > 1 ? static_cast<size_t>(points.rows() - 1) : 0;
+  longest.length_by_segment_m.assign(segments, 0.0);
+  // The stretch being walked: its length and its length along each segment it touched.
+  double stretch = 0;
+  std::vector<std::pair<size_t, double>> stretch_segments;
   bool in_air = false;
   Eigen::Vector3d last = Eigen::Vector3d::Zero();
-  const auto visit = [&](const Eigen::Vector3d& p) {
+  const auto visit = [&](const Eigen::Vector3d& p, size_t segment) {
     const bool is_air = air.is_air(p);
-    if (is_air && in_air) stretch += (p - last).norm();
-    if (!is_air) stretch = 0;
+    if (is_air && in_air) {
+      const double piece = (p - last).norm();
+      stretch += piece;
+      if (!stretch_segments.empty() && stretch_segments.back().first == segment)
+        stretch_segments.back().second += piece;
+      else
+        stretch_segments.emplace_back(segment, piece);
+    }
+    if (!is_air) {
+      stretch = 0;
+      stretch_segments.clear();
+    }
     in_air = is_air;
     last = p;
-    longest = std::max(longest, stretch);
+    if (stretch > longest.length_m) {
+      longest.length_m = stretch;
+      std::fill(longest.length_by_segment_m.begin(), longest.length_by_segment_m.end(), 0.0);
+      for (const auto& [s, length] : stretch_segments) longest.length_by_segment_m[s] = length;
+    }
   };
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const Eigen::Vector3d p = point_of(points, i);
+    // The samples of the segment ending at point i belong to segment i - 1.
+    const size_t segment = i > 0 ? static_cast<size_t>(i - 1) : 0;
     if (i > 0) {
       const Eigen::Vector3d a = point_of(points, i - 1);
       const int pieces = static_cast<int>(std::ceil((p - a).norm() / step_m));
-      for (int k = 1; k < pieces; ++k) visit(a + (p - a) * (static_cast<double>(k) / pieces));
+      for (int k = 1; k < pieces; ++k)
+        visit(a + (p - a) * (static_cast<double>(k) / pieces), segment);
     }
-    visit(p);
+    visit(p, segment);
   }
   return longest;
 }
 
 KinkMeasures measure_kinks(const StrandSet& grown, const TriangleMeshDistance& hair_distance,
                            const TriangleMeshDistance* body_distance, double head_height_m,
-                           const KinkLimits& limits) {
+                           const KinkLimits& limits, const std::vector<int8_t>* point_rule) {
   const int64_t n = grown.strand_count();
-  std::vector<uint8_t> hairpin(static_cast<size_t>(n), 0), chord(static_cast<size_t>(n), 0);
+  if (point_rule != nullptr) {
+    if (static_cast<int64_t>(point_rule->size()) != grown.point_count())
+      throw Error::bad_input("measure_kinks", std::to_string(point_rule->size()) +
+                                                    " point rules for " + std::to_string(grown.point_count()) + " points");
+    for (const int8_t rule : *point_rule)
+      if (rule < 0 || rule > 3)
+        throw Error::bad_input("measure_kinks",
+                               "a point rule outside 0-3: " + std::to_string(rule));
+  }
+  std::vector<uint8_t> hairpin(static_cast<size_t>(n), 0), chord(static_cast<size_t>(n), 0),
+      chord_rule(static_cast<size_t>(n), 0);
   const AirAroundHair air(hair_distance, body_distance, limits.air_distance_h * head_height_m,
                           limits.covered_reach_h * head_height_m);
   const double step_m = limits.air_sample_step_h * head_height_m;
@@ -96,8 +132,18 @@ KinkMeasures measure_kinks(const StrandSet& grown, const TriangleMeshDistance& h
   for (int64_t s = 0; s < n; ++s) {
     const Points3f points = grown.strand(s);
     hairpin[static_cast<size_t>(s)] = has_hairpin(points, limits.hairpin_turn_deg);
-    chord[static_cast<size_t>(s)] =
-        longest_air_stretch_m(points, air, step_m) > limits.air_chord_length_m;
+    const AirStretch stretch = longest_air_stretch(points, air, step_m);
+    chord[static_cast<size_t>(s)] = stretch.length_m > limits.air_chord_length_m;
+    if (chord[static_cast<size_t>(s)] && point_rule != nullptr) {
+      // The rule of a segment is its end point's.
+      std::array<double, 4> by_rule{};
+      const int64_t first = grown.offsets[static_cast<size_t>(s)];
+      for (size_t k = 0; k < stretch.length_by_segment_m.size(); ++k)
+        by_rule[static_cast<size_t>((*point_rule)[static_cast<size_t>(first) + k + 1])] +=
+            stretch.length_by_segment_m[k];
+      chord_rule[static_cast<size_t>(s)] = static_cast<uint8_t>(
+          std::max_element(by_rule.begin(), by_rule.end()) - by_rule.begin());
+    }
   }
   KinkMeasures m;
   m.strands = n;
@@ -106,6 +152,8 @@ KinkMeasures measure_kinks(const StrandSet& grown, const TriangleMeshDistance& h
     m.hairpin_strands += h;
     m.air_chord_strands += c;
     m.kinked_strands += h || c;
+    if (h || c) m.kinked.push_back(s);
+    if (c) ++m.air_chord_strands_by_rule[chord_rule[static_cast<size_t>(s)]];
   }
   return m;
 }

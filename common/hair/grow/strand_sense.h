@@ -3,7 +3,9 @@
 // (hairpins), that cut through air where the mesh has no hair (chords), and how much
 // they curl against the cards they were grown from.
 
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "hair/core/strand_set.h"
 #include "hair/geom/triangle_mesh_distance.h"
@@ -38,6 +40,12 @@ struct KinkMeasures {
   int64_t hairpin_strands = 0;    ///< with a turn sharper than hairpin_turn_deg
   int64_t air_chord_strands = 0;  ///< with a chord through air longer than air_chord_length_m
   int64_t kinked_strands = 0;     ///< with either
+  /// The air-chord strands by the GrowRule that grew most of the length of their longest
+  /// stretch through air: [1] field, [2] input strand, [3] bridge ([0] when no rule was
+  /// given). Sums to air_chord_strands.
+  std::array<int64_t, 4> air_chord_strands_by_rule{};
+  /// The index of every kinked strand, in order.
+  std::vector<int64_t> kinked;
   double kinked_share() const {
     return strands == 0 ? 0.0 : static_cast<double>(kinked_strands) / static_cast<double>(strands);
   }
@@ -65,15 +73,31 @@ class AirAroundHair {
   double air_m_, reach_m_;
 };
 
+/// The longest stretch of a polyline through air, and which segments it runs along.
+struct AirStretch {
+  double length_m = 0;  ///< arc length along which every tested point is air
+  /// Arc length of the stretch along each segment: entry i for the segment ending at point
+  /// i + 1.
+  std::vector<double> length_by_segment_m;
+};
+
 /// The longest stretch (metres of arc length) of `points` along which every tested point
 /// is air; points are tested at the vertices and every `step_m` between them.
-double longest_air_stretch_m(const Points3f& points, const AirAroundHair& air, double step_m);
+AirStretch longest_air_stretch(const Points3f& points, const AirAroundHair& air, double step_m);
+inline double longest_air_stretch_m(const Points3f& points, const AirAroundHair& air,
+                                    double step_m) {
+  return longest_air_stretch(points, air, step_m).length_m;
+}
 
 /// Kinks of every strand of `grown` against the hair mesh and the body (their distance
-/// indices; the body may be null). Deterministic; strands run in parallel (OpenMP).
+/// indices; the body may be null). With `point_rule` (the grow stage's /strands/point_rule,
+/// one GrowRule value 0-3 per point), the air chords are also counted by the rule that grew
+/// them. Deterministic; strands run in parallel (OpenMP). Throws hair::Error (bad input)
+/// when `point_rule` is given without one entry per point or with a value outside 0-3.
 KinkMeasures measure_kinks(const StrandSet& grown, const TriangleMeshDistance& hair_distance,
                            const TriangleMeshDistance* body_distance, double head_height_m,
-                           const KinkLimits& limits = {});
+                           const KinkLimits& limits = {},
+                           const std::vector<int8_t>* point_rule = nullptr);
 
 /// How much strands curl: the total turning angle over the total length (radians per
 /// metre) of every strand resampled at `step_m` of arc length (strands shorter than

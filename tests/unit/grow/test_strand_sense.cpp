@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "hair/core/error.h"
 #include "hair/grow/strand_sense.h"
 
 namespace {
@@ -74,7 +75,38 @@ TEST(StrandSense, AStretchFarFromTheMeshIsAChordThroughAir) {
   EXPECT_EQ(m.hairpin_strands, 1);
   EXPECT_EQ(m.air_chord_strands, 1);  // `chord`; `out` is in air for under 2 cm
   EXPECT_EQ(m.kinked_strands, 2);
+  EXPECT_EQ(m.kinked, (std::vector<int64_t>{2, 3}));
   EXPECT_DOUBLE_EQ(m.kinked_share(), 0.5);
+}
+
+TEST(StrandSense, AChordIsCountedByTheRuleThatGrewMostOfItsStretch) {
+  const FlatCard card;
+  const hair::TriangleMeshDistance distance(card.vertices, card.triangles);
+  // The chord's two segments: onto the card's edge (1 cm of it in air) and 0.3 m through
+  // air. Grown as input strand then bridge, it is the bridge's chord; with the two rules
+  // swapped, the input strand's.
+  const Points3f chord = polyline({{0.05f, 0, 0}, {0.15f, 0, 0.02f}, {0.45f, 0, 0.02f}});
+  const hair::StrandSet strands = hair::strand_set_from_polylines({chord, chord});
+  const std::vector<int8_t> rules = {0, 2, 3, 0, 3, 2};
+  const hair::KinkMeasures m =
+      hair::measure_kinks(strands, distance, nullptr, 0.25, {}, &rules);
+  EXPECT_EQ(m.air_chord_strands, 2);
+  EXPECT_EQ(m.air_chord_strands_by_rule[3], 1);
+  EXPECT_EQ(m.air_chord_strands_by_rule[2], 1);
+  EXPECT_EQ(m.air_chord_strands_by_rule[1], 0);
+  // Without rules every chord is counted at [0].
+  EXPECT_EQ(hair::measure_kinks(strands, distance, nullptr, 0.25).air_chord_strands_by_rule[0], 2);
+  // One rule per point, each 0-3.
+  const std::vector<int8_t> short_rules = {0, 2, 3};
+  EXPECT_THROW(hair::measure_kinks(strands, distance, nullptr, 0.25, {}, &short_rules), hair::Error);
+  const std::vector<int8_t> bad_rules = {0, 2, 4, 0, 3, 2};
+  EXPECT_THROW(hair::measure_kinks(strands, distance, nullptr, 0.25, {}, &bad_rules), hair::Error);
+  // The stretch's length by segment sums to its length.
+  const hair::AirAroundHair air(distance, nullptr, 0.01, 0.1);
+  const hair::AirStretch stretch = hair::longest_air_stretch(chord, air, 0.0025);
+  ASSERT_EQ(stretch.length_by_segment_m.size(), 2u);
+  EXPECT_NEAR(stretch.length_by_segment_m[0] + stretch.length_by_segment_m[1], stretch.length_m, 1e-9);
+  EXPECT_GT(stretch.length_by_segment_m[1], 0.29);
 }
 
 TEST(StrandSense, HairUnderACardLayerIsNotAir) {

@@ -426,7 +426,7 @@ TEST(SynthGrow, PaintedPresetsAgainstTheirTruth) {
   // The real-meshes issue's presets, grown with their texture and without it (the same
   // mesh, its materials dropped): grown strands within 0.02 H of the true ones on average
   // both ways (coverage and fidelity), and no grown hair where the truth has none (a wig
-  // cap read in rings grows a fringe down the forehead).
+  // cap read in rings would grow a fringe down the forehead).
   PolyMesh body = read_mesh(std::filesystem::path(HAIR_SOURCE_DIR) / "data/samples/body.obj");
   body.vertices *= 0.1f;
   for (const std::string& name : painted_preset_names()) {
@@ -469,9 +469,10 @@ TEST(SynthGrow, PaintedPresetsAgainstTheirTruth) {
     }
     with_paint.print(name + " painted");
     without_paint.print(name + " plain");
-    // Read in rings, the grown cap crosses the true hair.
+    // Without its paint, the cap is read across its rings (hair does not circle the head):
+    // the grown cap runs along the true hair as with it.
     if (name == "ring_cap") {
-      EXPECT_LT(without_paint.along_truth.mean(), with_paint.along_truth.mean() - 0.2);
+      EXPECT_GE(without_paint.along_truth.mean(), with_paint.along_truth.mean() - 0.05);
     }
   }
 }
