@@ -31,13 +31,13 @@ int main(int argc, char** argv) {
         "{}: {} strands, {} points, {} pushed out of the body, {} continuations ({} "
         "into another cluster); {} strands joined the cards feeding a continued cluster; {} "
         "ended where the card they followed dives into the body, {} where the next step would "
-        "fold them back; roots from {} (root-type "
+        "fold them back; {} left the field where it ran into air; roots from {} (root-type "
         "strands cover {:.0f}% of the scalp under the hair)",
         extract_path, result.strands.strand_count(), result.strands.point_count(),
         result.points_pushed_out,
         result.continuations_same_cluster + result.continuations_other_cluster,
         result.continuations_other_cluster, result.strands_joining_continued_flow,
-        result.strands_ended_at_body, result.strands_ended_at_fold,
+        result.strands_ended_at_body, result.strands_ended_at_fold, result.strands_stopped_at_air,
         result.roots_from_any_type ? "strands of any type" : "root-type strands",
         100 * result.typed_root_scalp_share);
 

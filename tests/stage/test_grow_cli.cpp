@@ -423,7 +423,8 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
       report, {braid.extract.string(), braid.strands.string(), "--name", "braid01", "--by-rule"});
   EXPECT_EQ(by_rule.exit_code, 0) << by_rule.err;
   std::vector<std::string> rule_lines = text_lines(by_rule.out);
-  ASSERT_EQ(rule_lines.size(), 9u) << by_rule.out;
+  // The flow table (9 lines), a blank line, and the air chords by rule (6 lines).
+  ASSERT_EQ(rule_lines.size(), 16u) << by_rule.out;
   auto cells = [](const std::string& line) {
     std::vector<std::string> out;
     std::stringstream stream(line);
@@ -448,6 +449,16 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
   ASSERT_GT(judged, 0);
   const std::vector<std::string> measures = cells(row_lines[0]);
   EXPECT_NEAR(100 * along / judged, std::stod(measures[10]), 0.1) << by_rule.out << row_lines[0];
+  // The air chords by rule sum to all of them, the share the row's kinks column gives
+  // ("kinked% (hairpins% / air chords%)").
+  int64_t chords_by_rule = 0;
+  for (size_t i = 12; i < 15; ++i) chords_by_rule += std::stoll(cells(rule_lines[i])[2]);
+  const std::vector<std::string> all_chords = cells(rule_lines[15]);
+  ASSERT_EQ(all_chords[1], "all") << by_rule.out;
+  EXPECT_EQ(chords_by_rule, std::stoll(all_chords[2])) << by_rule.out;
+  const std::string& kinks = measures[13];
+  const double row_chord_share = std::stod(kinks.substr(kinks.find('/') + 1));
+  EXPECT_NEAR(std::stod(all_chords[3]), row_chord_share, 0.005) << by_rule.out << row_lines[0];
 
   auto missing =
       run_command(report, {braid.extract.string(), (directory() / "missing.h5").string()});

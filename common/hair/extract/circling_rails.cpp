@@ -12,7 +12,9 @@ FamilyCircling family_circling(const Points3f& vertices, const EdgeFamily& famil
   const Eigen::Vector3d& a = axis_direction;
   // Two unit vectors across the axis, for the azimuth round it.
   const Eigen::Vector3d e1 =
-      (std::abs(a.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(a).normalized();
+      (std::abs(a.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY())
+          .cross(a)
+          .normalized();
   const Eigen::Vector3d e2 = a.cross(e1);
   const auto across = [&](const Eigen::Vector3d& p) {
     const Eigen::Vector3d q = p - axis_point;
@@ -65,9 +67,11 @@ Eigen::Vector3d region_axis_direction(const Points3f& vertices, const EdgeFamily
   return out.norm() > 1e-9 ? Eigen::Vector3d(out.normalized()) : Eigen::Vector3d::UnitY();
 }
 
-int family_across_rings(const std::array<FamilyCircling, 2>& families, const CirclingLimits& limits) {
+int family_across_rings(const std::array<FamilyCircling, 2>& families,
+                        const CirclingLimits& limits) {
   const auto circles = [&](const FamilyCircling& f) {
-    return f.circling_share >= limits.min_circling_share && f.mean_sweep_deg >= limits.min_sweep_deg;
+    return f.circling_share >= limits.min_circling_share &&
+           f.mean_sweep_deg >= limits.min_sweep_deg;
   };
   for (int rings = 0; rings < 2; ++rings) {
     const FamilyCircling& other = families[static_cast<size_t>(1 - rings)];

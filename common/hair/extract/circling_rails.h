@@ -42,15 +42,16 @@ Eigen::Vector3d region_axis_direction(const Points3f& vertices, const EdgeFamily
 
 /// What makes a family circle the head.
 struct CirclingLimits {
-  double min_circling_share = 0.7;   ///< of its length running round the axis
-  double min_sweep_deg = 120;        ///< winding at least this far round it, on average
+  double min_circling_share = 0.7;        ///< of its length running round the axis
+  double min_sweep_deg = 120;             ///< winding at least this far round it, on average
   double max_other_circling_share = 0.3;  ///< the other family runs across the rings
-  double other_min_length_m = 0.06;  ///< and its chains are strands, not a strip's width
+  double other_min_length_m = 0.06;       ///< and its chains are strands, not a strip's width
 };
 
 /// The family (0 or 1) that runs along the hair because the other circles the head, or -1
 /// where neither or both do, or where the other family's chains are too short to be
 /// strands (a braid wound round the head, whose across chains are the braid's width).
-int family_across_rings(const std::array<FamilyCircling, 2>& families, const CirclingLimits& limits);
+int family_across_rings(const std::array<FamilyCircling, 2>& families,
+                        const CirclingLimits& limits);
 
 }  // namespace hair

@@ -179,6 +179,20 @@ void group_strands(const MeshPatches& patches, const std::vector<PatchTopology>&
   check_strand_set(result.strands);
 }
 
+/// The middle of the extent of the body's vertices above `neck_y` (the head region); the
+/// origin when there are none.
+Eigen::Vector3d head_region_centre(const Points3f& body_vertices, double neck_y) {
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector3d high = -low;
+  for (Eigen::Index v = 0; v < body_vertices.rows(); ++v) {
+    if (body_vertices(v, 1) < neck_y) continue;
+    const Eigen::Vector3d p = body_vertices.row(v).cast<double>().transpose();
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return low.x() <= high.x() ? Eigen::Vector3d(0.5 * (low + high)) : Eigen::Vector3d::Zero();
+}
+
 }  // namespace
 
 ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const ExtractParams& params,
@@ -224,21 +238,9 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
   const PaintedFlow& guiding_flow = params.paint_guides_strands ? result.painted_flow : no_flow;
   const EdgeFaces edge_faces(result.hair_mesh);
   const auto paint = family_paint(result.hair_mesh, guiding_flow, edge_faces, topologies);
-  // The head's centre: the middle of the head region's extent.
-  Eigen::Vector3d head_min = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
-  Eigen::Vector3d head_max = -head_min;
-  for (Eigen::Index v = 0; v < result.body_vertices.rows(); ++v) {
-    if (result.body_vertices(v, 1) < result.head.neck_y) continue;
-    const Eigen::Vector3d p = result.body_vertices.row(v).cast<double>().transpose();
-    head_min = head_min.cwiseMin(p);
-    head_max = head_max.cwiseMax(p);
-  }
-  const Eigen::Vector3d head_centre = head_min.x() <= head_max.x()
-                                          ? Eigen::Vector3d(0.5 * (head_min + head_max))
-                                          : Eigen::Vector3d::Zero();
-  std::vector<std::vector<int>> along =
-      along_families(vertices, topologies, paint, head_centre, head_height_m,
-                     params, result.stats);
+  std::vector<std::vector<int>> along = along_families(
+      vertices, topologies, paint, head_region_centre(result.body_vertices, result.head.neck_y),
+      head_height_m, params, result.stats);
 
   // Rails, their directions, and the strands group by group.
   std::vector<RegionRails> regions =

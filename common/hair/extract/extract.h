@@ -24,8 +24,9 @@ struct ExtractParams {
   /// Ratio of mean chain lengths of the two edge families above which the longer
   /// family is taken as running along the hair, whatever the texture says.
   double along_length_ratio = 1.5;
-  /// Hair does not go round the head: before chain length, a family whose chains run round
-  /// the head's vertical axis on at least this share of their length...
+  /// Hair does not go round the head: where the paint is not clear, before chain length, a
+  /// family whose chains run round the axis from the head's centre through their region
+  /// (circling_rails.h) on at least this share of their length...
   double along_circling_min_share = 0.7;
   /// ...winding round it by at least this much on average (degrees), is a shell's rings;
   /// the other family is the rails when it runs round the axis on at most 1 -

@@ -31,8 +31,9 @@ void declare_reading_and_paint_params(ParamSet& params, ExtractStageParams& valu
              "longer runs along the hair whatever the texture says",
              ParamRange::at_least(1));
   params.add("along_circling_min_share", p.along_circling_min_share,
-             "hair does not go round the head: before chain length, a family whose chains run "
-             "round the head's vertical axis on at least this share of their length...",
+             "hair does not go round the head: where the paint is not clear, before chain length, "
+             "a family whose chains run round the axis from the head's centre through their "
+             "region on at least this share of their length...",
              ParamRange::closed(0.5, 1));
   params.add("along_circling_min_sweep_deg", p.along_circling_min_sweep_deg,
              "...winding round it by at least this many degrees on average, is a shell's "

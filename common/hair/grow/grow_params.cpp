@@ -1,8 +1,10 @@
 #include "hair/grow/grow_params.h"
 
 namespace hair {
+namespace {
 
-void declare_grow_params(ParamSet& p, GrowParams& params) {
+/// The roots and the field phase.
+void declare_root_and_field_params(ParamSet& p, GrowParams& params) {
   p.add("strand_count", params.strand_count, "strands to grow: roots sampled on the scalp",
         ParamRange::closed(1, 1'000'000));
   p.add("seed", params.seed, "seed of the root sampling", ParamRange::at_least(0));
@@ -33,6 +35,16 @@ void declare_grow_params(ParamSet& p, GrowParams& params) {
   p.add("shell_max_height_h", params.shell_max_height_h,
         "...under strand points at most this high above the body, in H",
         ParamRange::closed(0, 1));
+  p.add("field_air_stop_h", params.field_air_stop_h,
+        "grown hair lies where the mesh has hair: a strand whose field phase runs this far "
+        "through air is taken back to where it left the hair and the input strands take over, "
+        "in H (0: never)",
+        ParamRange::at_least(0));
+  p.add("air_distance_h", params.air_distance_h,
+        "...air: farther than this from every hair triangle, in H...", ParamRange::above(0));
+  p.add("air_covered_reach_h", params.air_covered_reach_h,
+        "...and no hair over it within this distance straight out from the body, in H",
+        ParamRange::at_least(0));
   p.add("length_factor", params.length_factor,
         "the field phase ends at this many times the remaining length of the input strand "
         "nearest the root",
@@ -41,6 +53,11 @@ void declare_grow_params(ParamSet& p, GrowParams& params) {
         "no step turns a strand by more than this from its last: along the field the cards "
         "take over there, along a card or a bridge the strand ends (180: never)",
         ParamRange::closed(0, 180));
+}
+
+/// The input strands followed after the field, the bridges between them, the body, the
+/// layers and the limits.
+void declare_following_params(ParamSet& p, GrowParams& params) {
   p.add("continue_radius_h", params.continue_radius_h,
         "at an input strand's end, the next one must start within this distance, in H",
         ParamRange::above(0));
@@ -114,6 +131,13 @@ void declare_grow_params(ParamSet& p, GrowParams& params) {
         ParamRange::above(0));
   p.add("max_points_per_strand", params.max_points_per_strand,
         "growing stops at this many points per strand", ParamRange::closed(2, 100'000));
+}
+
+}  // namespace
+
+void declare_grow_params(ParamSet& p, GrowParams& params) {
+  declare_root_and_field_params(p, params);
+  declare_following_params(p, params);
 }
 
 void check_grow_params(const GrowParams& params) { check_params(params, declare_grow_params); }

@@ -164,10 +164,21 @@ void GrowingContext::measure_heights_above_body() {
 }
 
 void GrowingContext::index_hair_mesh() {
-  if (input_.hair_triangles.rows() > 0 &&
-      input_.hair_triangle_flow.rows() == input_.hair_triangles.rows())
-    painted_hair_ =
+  if (input_.hair_triangles.rows() > 0) {
+    hair_distance_ =
         std::make_unique<TriangleMeshDistance>(input_.hair_vertices, input_.hair_triangles);
+    hair_painted_ = input_.hair_triangle_flow.rows() == input_.hair_triangles.rows();
+    if (params_.field_air_stop_h > 0) {
+      const TriangleMeshDistance* body = body_distance_.get();
+      if (body == nullptr && input_.body_triangles.rows() > 0) {
+        air_body_distance_ =
+            std::make_unique<TriangleMeshDistance>(input_.body_vertices, input_.body_triangles);
+        body = air_body_distance_.get();
+      }
+      air_ = std::make_unique<AirAroundHair>(*hair_distance_, body, params_.air_distance_h * h_,
+                                             params_.air_covered_reach_h * h_);
+    }
+  }
   if (params_.follow_card_keep_h > 0 && input_.hair_triangles.rows() > 0)
     card_surfaces_ =
         CardSurfaces(input_.hair_vertices, input_.hair_triangles, input_.hair_triangle_group,
@@ -298,8 +309,8 @@ bool GrowingContext::crosses_paint(const Vec3& from, const Vec3& to) const {
 }
 
 std::optional<Vec3> GrowingContext::painted_flow_near(const Vec3& point) const {
-  if (!painted_hair_) return std::nullopt;
-  const TriangleMeshDistance::Nearest face = painted_hair_->nearest(point);
+  if (!hair_painted_) return std::nullopt;
+  const TriangleMeshDistance::Nearest face = hair_distance_->nearest(point);
   if (face.triangle < 0 || face.distance > params_.follow_radius_h * h_) return std::nullopt;
   const Vec3 flow = point_of(input_.hair_triangle_flow, face.triangle);
   if (!(flow.norm() > 0)) return std::nullopt;

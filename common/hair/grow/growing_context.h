@@ -15,6 +15,7 @@
 #include "hair/geom/triangle_mesh_distance.h"
 #include "hair/grow/card_surfaces.h"
 #include "hair/grow/strand_growing.h"
+#include "hair/grow/strand_sense.h"
 
 namespace hair {
 
@@ -77,6 +78,9 @@ class GrowingContext {
 
   bool layered() const { return body_distance_ != nullptr; }
   const CardSurfaces& card_surfaces() const { return card_surfaces_; }
+  /// Where the air is around the hair mesh (GrowParams::field_air_stop_h); null when the
+  /// field phase does not stop at air.
+  const AirAroundHair* air() const { return air_.get(); }
   const TriangleMeshDistance& body_distance() const { return *body_distance_; }
   /// Height above the body of the input strand through `row`, `length_m` further along it
   /// towards its tip (its tip's height beyond it); `cursor` (a row of the same strand, at
@@ -199,8 +203,12 @@ class GrowingContext {
   std::vector<double> length_to_tip_m_;
   std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
   CardSurfaces card_surfaces_;  ///< empty without follow_card_keep_h or the hair mesh
-  /// The whole hair mesh; null without its painted flow.
-  std::unique_ptr<TriangleMeshDistance> painted_hair_;
+  /// The whole hair mesh; null without its triangles.
+  std::unique_ptr<TriangleMeshDistance> hair_distance_;
+  bool hair_painted_ = false;  ///< the hair mesh has its painted flow
+  /// The body for the air test, when the layers' body_distance_ is not built.
+  std::unique_ptr<TriangleMeshDistance> air_body_distance_;
+  std::unique_ptr<AirAroundHair> air_;  ///< null with field_air_stop_h = 0 or no hair mesh
   std::vector<double> height_m_;                         ///< per input point, with layers
   bool any_type_roots_ = false;
 };

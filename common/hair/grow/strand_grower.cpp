@@ -162,6 +162,13 @@ class StrandGrower {
     int steps_since_layer = kLayerEvery - 1;
     Vec3 layer_step = Vec3::Zero();
     double climb_per_m = -1;  // the climb to the layer per metre along, from the first look-up
+    // The stretch through air the strand is on: its length, the points before it and the
+    // direction there.
+    const AirAroundHair* air = context_.air();
+    const double air_stop_m = params_.field_air_stop_h * context_.input().head_height_m;
+    double air_m = 0;
+    size_t before_air = 0;
+    Vec3 direction_before_air = direction_;
     while (!full()) {
       if (length_m + step_m_ > length_limit_m) return false;
       std::optional<Vec3> d1 = field_->direction(point);
@@ -184,6 +191,25 @@ class StrandGrower {
       // The field runs into the body here: the input strands take over, as where the
       // field ends early.
       if (ran_into_body(point, *d2)) break;
+      // Grown hair lies where the mesh has hair: a stretch through air longer than
+      // field_air_stop_h is taken back, and the input strands take over.
+      if (air != nullptr) {
+        if (air->is_air(strand_.points.back())) {
+          if (air_m == 0) {
+            before_air = strand_.points.size() - 1;
+            direction_before_air = direction_;
+          }
+          air_m += (strand_.points.back() - point).norm();
+          if (air_m > air_stop_m) {
+            take_back_to(before_air);
+            direction_ = direction_before_air;
+            ++strand_.field_air_stops;
+            break;
+          }
+        } else {
+          air_m = 0;
+        }
+      }
       direction_ = *d2;
       length_m += step_m_;
       point = strand_.points.back();

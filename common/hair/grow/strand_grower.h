@@ -23,6 +23,7 @@ struct GrowingStrand {
   int64_t joined = 0;  ///< times it joined the cards feeding a continuation (joined_feeder())
   bool ended_at_body = false;  ///< its last steps tried ran into the body (kBlockedAdvance)
   bool ended_at_fold = false;  ///< its next step, off the field, would have folded it back
+  int64_t field_air_stops = 0;  ///< its field phase ran into air and was taken back
   int blocked_steps = 0;       ///< steps in a row that hardly advanced
 };
 

@@ -155,6 +155,7 @@ void count_strand_outcomes(const GrowingStrand& strand, GrowResult& result) {
   result.strands_joining_continued_flow += strand.joined > 0 ? 1 : 0;
   result.strands_ended_at_body += strand.ended_at_body ? 1 : 0;
   result.strands_ended_at_fold += strand.ended_at_fold ? 1 : 0;
+  result.strands_stopped_at_air += strand.field_air_stops > 0 ? 1 : 0;
 }
 
 /// The grown strands into result.strands with their attributes, point_rule and the

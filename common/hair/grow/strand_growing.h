@@ -53,6 +53,18 @@ struct GrowParams {
   bool field_shell_seeds = true;
   /// ...under the points of root-carrying strands at most this high above the body.
   double shell_max_height_h = 0.3;
+  /// Grown hair lies where the mesh has hair: a strand whose field phase runs farther than
+  /// this (H) through air (farther than `air_distance_h` from every hair triangle, and no
+  /// hair straight out from the body over it within `air_covered_reach_h`: a card's edge,
+  /// a shell's rim, the field running on past a card's tip) is taken back to where it left
+  /// the hair, and the input strands take over, as where the field ends early. 0 turns it off.
+  double field_air_stop_h = 0.04;
+  /// ...air: farther than this (H) from every hair triangle (about twice a card layer's
+  /// thickness, so that the space between two layers is hair)...
+  double air_distance_h = 0.04;
+  /// ...and no hair within air_distance_h of the way straight out from the body through the
+  /// point, up to this far (H): hair under a card layer or inside a shell is not air.
+  double air_covered_reach_h = 0.5;
   /// The field phase ends once a strand is this many times as long as what remains of the
   /// input strand nearest its root (from that strand's nearest point to its tip).
   double length_factor = 1.0;
@@ -226,6 +238,9 @@ struct GrowResult {
   /// Strands that ended where their next step off the field would have turned them by more
   /// than GrowParams::max_turn_deg (the field phase hands over to the cards instead).
   int64_t strands_ended_at_fold = 0;
+  /// Strands whose field phase ran farther than GrowParams::field_air_stop_h through air
+  /// and was taken back to where it left the hair.
+  int64_t strands_stopped_at_air = 0;
   /// Roots took any input strand: no root-type group, or they covered too little of the
   /// scalp (GrowParams::min_typed_root_scalp_share).
   bool roots_from_any_type = false;

@@ -917,7 +917,10 @@ int64_t strands_past_the_gap(const GrowResult& result) {
 // either way. Out of the field, into the stacked card, no such check: the strands reach it
 // whatever the paint.
 TEST(StrandGrowing, BridgesFromCardToCardDoNotCutAcrossThePaint) {
-  const GrowParams params = params_with(kStrandCount);
+  // The hair mesh here is the painted patch alone, not the cards: everywhere else is air
+  // to the field's air stop, which is left off.
+  GrowParams params = params_with(kStrandCount);
+  params.field_air_stop_h = 0;
   GrowParams unchecked = params;
   unchecked.bridge_paint_max_angle_deg = 0;
   const GrowInput along = cards_over_painted_gap(true);
