@@ -111,17 +111,42 @@ TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3
   return best;
 }
 
-bool TriangleMeshDistance::is_within(const Eigen::Vector3d& point, double radius) const {
-  double bound = radius + index_->largest_radius;
-  std::vector<std::pair<uint32_t, double>> within;
-  nanoflann::SearchParams params;
-  params.sorted = true;  // nearest centroids first: the likeliest to be within
-  index_->tree->radiusSearch(point.data(), bound * bound, within, params);
-  for (const auto& [piece, squared_distance] : within) {
-    const auto& c = index_->corners[piece];
-    if ((closest_point_on_triangle(point, c[0], c[1], c[2]) - point).norm() <= radius) return true;
+namespace {
+
+/// A nanoflann result set that tests each triangle piece whose centroid the search meets
+/// and stops the search at the first within `radius` of the point: whether any is, without
+/// gathering, sorting or testing the rest.
+class FirstWithin {
+ public:
+  using DistanceType = double;
+  using IndexType = uint32_t;
+  FirstWithin(const Eigen::Vector3d& point, double radius, double bound,
+              const std::vector<std::array<Eigen::Vector3d, 3>>& corners)
+      : point_(point), radius_(radius), bound_squared_(bound * bound), corners_(corners) {}
+  bool full() const { return true; }
+  size_t size() const { return found_ ? 1 : 0; }
+  double worstDist() const { return bound_squared_; }
+  bool addPoint(double squared_distance, uint32_t piece) {
+    if (squared_distance >= bound_squared_) return true;
+    const auto& c = corners_[piece];
+    found_ = (closest_point_on_triangle(point_, c[0], c[1], c[2]) - point_).norm() <= radius_;
+    return !found_;  // stop at the first
   }
-  return false;
+  bool found() const { return found_; }
+
+ private:
+  const Eigen::Vector3d& point_;
+  double radius_, bound_squared_;
+  const std::vector<std::array<Eigen::Vector3d, 3>>& corners_;
+  bool found_ = false;
+};
+
+}  // namespace
+
+bool TriangleMeshDistance::is_within(const Eigen::Vector3d& point, double radius) const {
+  FirstWithin first(point, radius, radius + index_->largest_radius, index_->corners);
+  index_->tree->radiusSearchCustomCallback(point.data(), first, nanoflann::SearchParams());
+  return first.found();
 }
 
 Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
