@@ -106,17 +106,23 @@ std::vector<std::vector<int>> along_families(
   circling.min_sweep_deg = params.along_circling_min_sweep_deg;
   circling.max_other_circling_share = 1 - params.along_circling_min_share;
   circling.other_min_length_m = params.along_circling_other_min_length_h * head_height_m;
-  // Where the paint is clear, it says where the hair runs, whatever the mesh's shape.
-  auto across_rings = [&](size_t p, size_t r) {
-    const auto& f = topologies[p].regions[r].families;
-    if (std::min(paint[p][r][0].judged_share, paint[p][r][1].judged_share) >=
-        params.along_paint_min_judged_share)
-      return -1;
-    const Eigen::Vector3d axis = region_axis_direction(vertices, f[0], head_centre);
-    return family_across_rings({family_circling(vertices, f[0], head_centre, axis),
-                                family_circling(vertices, f[1], head_centre, axis)},
-                               circling);
-  };
+  // The family across rings round the head, per region (-1: none), once. Where the paint
+  // is clear, it says where the hair runs, whatever the mesh's shape.
+  std::vector<std::vector<int>> across(topologies.size());
+  for (size_t p = 0; p < topologies.size(); ++p)
+    for (size_t r = 0; r < topologies[p].regions.size(); ++r) {
+      const auto& f = topologies[p].regions[r].families;
+      int family = -1;
+      if (std::min(paint[p][r][0].judged_share, paint[p][r][1].judged_share) <
+          params.along_paint_min_judged_share) {
+        const Eigen::Vector3d axis = region_axis_direction(vertices, f[0], head_centre);
+        family = family_across_rings({family_circling(vertices, f[0], head_centre, axis),
+                                      family_circling(vertices, f[1], head_centre, axis)},
+                                     circling);
+      }
+      across[p].push_back(family);
+    }
+  auto across_rings = [&](size_t p, size_t r) { return across[p][r]; };
   std::vector<bool> along_is_v;  // clear regions: does the along family follow v?
   for (size_t p = 0; p < topologies.size(); ++p)
     for (size_t r = 0; r < topologies[p].regions.size(); ++r) {
@@ -153,9 +159,9 @@ std::vector<std::vector<int>> along_families(
         rule = AlongRule::painted_flow;
         chosen = painted;
         if (clear && painted != longer) ++stats.regions_turned_by_paint;
-      } else if (int across = across_rings(p, r); across >= 0) {
+      } else if (int family = across_rings(p, r); family >= 0) {
         rule = AlongRule::across_rings;
-        chosen = across;
+        chosen = family;
       } else if (!clear && texture_tells) {
         rule = AlongRule::texture_axis;
         int v_family = f[0].v_alignment > f[1].v_alignment ? 0 : 1;
