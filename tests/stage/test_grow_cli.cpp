@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -419,8 +420,9 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
 
   // --by-rule: the segments "grown along flow" judges, by how each was grown; weighted by
   // their counts, the three rules' shares along give that column's figure.
-  auto by_rule = run_command(
-      report, {braid.extract.string(), braid.strands.string(), "--name", "braid01", "--by-rule"});
+  const std::filesystem::path kinked_file = directory() / "kinked.txt";
+  auto by_rule = run_command(report, {braid.extract.string(), braid.strands.string(), "--name",
+                                      "braid01", "--by-rule", "--kinked", kinked_file.string()});
   EXPECT_EQ(by_rule.exit_code, 0) << by_rule.err;
   std::vector<std::string> rule_lines = text_lines(by_rule.out);
   // The flow table (9 lines), a blank line, and the air chords by rule (6 lines).
@@ -459,6 +461,14 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
   const std::string& kinks = measures[13];
   const double row_chord_share = std::stod(kinks.substr(kinks.find('/') + 1));
   EXPECT_NEAR(std::stod(all_chords[3]), row_chord_share, 0.005) << by_rule.out << row_lines[0];
+  // --kinked: one strand index a line, increasing, as many as the row's kinked share says.
+  std::ifstream kinked_in(kinked_file);
+  std::vector<int64_t> kinked;
+  for (int64_t s; kinked_in >> s;) kinked.push_back(s);
+  const double kinked_share = std::stod(kinks.substr(0, kinks.find('%')));
+  EXPECT_NEAR(100.0 * static_cast<double>(kinked.size()) / 2000, kinked_share, 0.026);
+  EXPECT_TRUE(std::is_sorted(kinked.begin(), kinked.end()));
+  for (const int64_t s : kinked) EXPECT_TRUE(s >= 0 && s < 2000) << s;
 
   auto missing =
       run_command(report, {braid.extract.string(), (directory() / "missing.h5").string()});
