@@ -469,6 +469,14 @@ TEST_F(GrowCli, ReportPrintsAHeaderAndOneRowPerRun) {
   EXPECT_NEAR(100.0 * static_cast<double>(kinked.size()) / 2000, kinked_share, 0.026);
   EXPECT_TRUE(std::is_sorted(kinked.begin(), kinked.end()));
   for (const int64_t s : kinked) EXPECT_TRUE(s >= 0 && s < 2000) << s;
+  // A --kinked path that cannot be written: exit 2, one line naming it, nothing printed.
+  const std::string unwritable = (directory() / "missing_folder" / "kinked.txt").string();
+  auto refused = run_command(report, {braid.extract.string(), braid.strands.string(),
+                                      "--by-rule", "--kinked", unwritable});
+  EXPECT_EQ(refused.exit_code, 2);
+  ASSERT_EQ(text_lines(refused.err).size(), 1u) << refused.err;
+  EXPECT_NE(refused.err.find(unwritable), std::string::npos) << refused.err;
+  EXPECT_TRUE(refused.out.empty()) << refused.out;
 
   auto missing =
       run_command(report, {braid.extract.string(), (directory() / "missing.h5").string()});

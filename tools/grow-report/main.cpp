@@ -96,10 +96,9 @@ void print_flow_by_rule(const std::string& label, const hair::FlowByRule& tally)
   print_tally_row("bridges between strands", tally.by_rule[3], all_judged);
 }
 
-/// The kinked strands' indices, one a line, to `path` (nothing when it is empty).
-void write_kinked(const std::string& path, const hair::KinkMeasures& kinks) {
-  if (path.empty()) return;
-  std::ofstream out(path);
+/// The kinked strands' indices, one a line, to `out` (nothing when it is not open).
+void write_kinked(std::ofstream& out, const std::string& path, const hair::KinkMeasures& kinks) {
+  if (!out.is_open()) return;
   for (const int64_t s : kinks.kinked) out << s << "\n";
   out.flush();
   if (!out) throw hair::Error::runtime(path, "cannot write the kinked strands");
@@ -150,6 +149,12 @@ int main(int argc, char** argv) {
   try {
     if (extract_path.empty() || strands_path.empty())
       throw hair::Error::usage("EXTRACT_H5 and STRANDS_H5 are required");
+    // Opened first, so that a path that cannot be written fails before anything is printed.
+    std::ofstream kinked_out;
+    if (!kinked_path.empty()) {
+      kinked_out.open(kinked_path);
+      if (!kinked_out) throw hair::Error::bad_input(kinked_path, "cannot be written (--kinked)");
+    }
     hair::h5::File extract = hair::h5::File::open_read_only(extract_path);
     hair::h5::require_schema(extract, hair::kExtractSchema);
     hair::GrownStrands grown =
@@ -213,7 +218,7 @@ int main(int argc, char** argv) {
                     share(kinks.air_chord_strands_by_rule[r]));
       std::printf("| all | %lld | %.2f%% |\n", static_cast<long long>(kinks.air_chord_strands),
                   share(kinks.air_chord_strands));
-      write_kinked(kinked_path, kinks);
+      write_kinked(kinked_out, kinked_path, kinks);
       return 0;
     }
     hair::GrowMeasures m = hair::measure_grown_strands(
@@ -269,7 +274,7 @@ int main(int argc, char** argv) {
     const hair::KinkMeasures kinks = hair::measure_kinks(
         grown.strands, hair::TriangleMeshDistance(hair_vertices, hair_triangles), &body_distance,
         grown.head_height_m);
-    write_kinked(kinked_path, kinks);
+    write_kinked(kinked_out, kinked_path, kinks);
     const auto strand_share = [&](int64_t count) {
       return 100.0 * static_cast<double>(count) /
              static_cast<double>(std::max<int64_t>(1, kinks.strands));
