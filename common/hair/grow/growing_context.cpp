@@ -164,10 +164,12 @@ void GrowingContext::measure_heights_above_body() {
 }
 
 void GrowingContext::index_hair_mesh() {
-  if (input_.hair_triangles.rows() > 0) {
+  hair_painted_ = input_.hair_triangles.rows() > 0 &&
+                 input_.hair_triangle_flow.rows() == input_.hair_triangles.rows();
+  // The whole hair mesh, indexed where the paint or the air test needs it.
+  if (hair_painted_ || (input_.hair_triangles.rows() > 0 && params_.field_air_stop_h > 0)) {
     hair_distance_ =
         std::make_unique<TriangleMeshDistance>(input_.hair_vertices, input_.hair_triangles);
-    hair_painted_ = input_.hair_triangle_flow.rows() == input_.hair_triangles.rows();
     if (params_.field_air_stop_h > 0) {
       const TriangleMeshDistance* body = body_distance_.get();
       if (body == nullptr && input_.body_triangles.rows() > 0) {

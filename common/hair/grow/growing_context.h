@@ -203,7 +203,8 @@ class GrowingContext {
   std::vector<double> length_to_tip_m_;
   std::unique_ptr<TriangleMeshDistance> body_distance_;  ///< with layers only
   CardSurfaces card_surfaces_;  ///< empty without follow_card_keep_h or the hair mesh
-  /// The whole hair mesh; null without its triangles.
+  /// The whole hair mesh; null without its triangles, or when neither its paint nor the
+  /// air test needs it.
   std::unique_ptr<TriangleMeshDistance> hair_distance_;
   bool hair_painted_ = false;  ///< the hair mesh has its painted flow
   /// The body for the air test, when the layers' body_distance_ is not built.
