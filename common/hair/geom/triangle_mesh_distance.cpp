@@ -1,6 +1,7 @@
 #include "hair/geom/triangle_mesh_distance.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <nanoflann.hpp>
 
@@ -22,9 +23,9 @@ struct TriangleMeshDistance::Index {
 
   std::vector<std::array<Eigen::Vector3d, 3>> corners;  ///< per indexed piece
   std::vector<int32_t> source_triangle;                 ///< per indexed piece
+  std::vector<double> radius;  ///< per indexed piece, its centroid-to-corner distance
   Centroids centroids;
   std::unique_ptr<Tree> tree;
-  size_t candidate_count = 4;
   double largest_radius = 0;  ///< largest centroid-to-corner distance of a triangle
 };
 
@@ -37,8 +38,7 @@ double piece_radius(const std::array<Eigen::Vector3d, 3>& c) {
 
 }  // namespace
 
-TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles,
-                                           int candidate_count)
+TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles)
     : index_(std::make_unique<Index>()) {
   std::vector<std::array<Eigen::Vector3d, 3>> all(static_cast<size_t>(triangles.rows()));
   std::vector<double> radii(all.size());
@@ -69,13 +69,12 @@ TriangleMeshDistance::TriangleMeshDistance(const Points3f& vertices, const Trian
         continue;
       }
       index_->largest_radius = std::max(index_->largest_radius, piece_radius(c));
+      index_->radius.push_back(piece_radius(c));
       index_->corners.push_back(c);
       index_->source_triangle.push_back(id);
       index_->centroids.points.push_back((c[0] + c[1] + c[2]) / 3.0);
     }
   }
-  index_->candidate_count =
-      std::min<size_t>(static_cast<size_t>(std::max(1, candidate_count)), index_->corners.size());
   index_->tree = std::make_unique<Index::Tree>(3, index_->centroids,
                                                nanoflann::KDTreeSingleIndexAdaptorParams(10));
   index_->tree->buildIndex();
@@ -85,30 +84,85 @@ TriangleMeshDistance::~TriangleMeshDistance() = default;
 TriangleMeshDistance::TriangleMeshDistance(TriangleMeshDistance&&) noexcept = default;
 TriangleMeshDistance& TriangleMeshDistance::operator=(TriangleMeshDistance&&) noexcept = default;
 
+namespace {
+
+/// A nanoflann result set that finds the nearest triangle piece in one pass of the k-d
+/// tree: each piece whose centroid the search meets is tested at once, and the search
+/// bound shrinks with the best distance d so far to d + R (R: the largest centroid-to-corner
+/// distance of a piece), since no piece nearer than d has its centroid farther than that.
+/// Ties in distance go to the lower triangle id, then the lower piece, whatever the order
+/// of the search, so a search started from any piece (consider()) finds the same answer.
+class NearestPiece {
+ public:
+  using DistanceType = double;
+  using IndexType = uint32_t;
+  NearestPiece(const Eigen::Vector3d& point, double largest_radius,
+               const std::vector<std::array<Eigen::Vector3d, 3>>& corners,
+               const std::vector<int32_t>& source_triangle, const std::vector<double>& radius)
+      : point_(point), largest_radius_(largest_radius), corners_(corners),
+        source_triangle_(source_triangle), radius_(radius) {
+    best_.distance = std::numeric_limits<double>::infinity();
+  }
+  bool full() const { return true; }
+  size_t size() const { return best_.triangle >= 0 ? 1 : 0; }
+  double worstDist() const { return bound_squared_; }
+  bool addPoint(double squared_distance, uint32_t piece) {
+    if (squared_distance > bound_squared_) return true;
+    // No point of the piece is nearer than its centroid less its radius.
+    if (std::sqrt(squared_distance) - radius_[piece] > best_.distance) return true;
+    consider(piece);
+    return true;
+  }
+  /// Tests `piece` against the best so far.
+  void consider(uint32_t piece) {
+    const auto& c = corners_[piece];
+    const Eigen::Vector3d closest = closest_point_on_triangle(point_, c[0], c[1], c[2]);
+    const double distance = (closest - point_).norm();
+    const int32_t id = source_triangle_[piece];
+    if (distance < best_.distance ||
+        (distance == best_.distance &&
+         (id < best_.triangle || (id == best_.triangle && piece < best_piece_)))) {
+      best_ = {distance, id, closest};
+      best_piece_ = piece;
+      // A little over (d + R)^2, so that rounding never drops a piece as near as d.
+      const double bound = (distance + largest_radius_) * (1 + 1e-9) + 1e-12;
+      bound_squared_ = bound * bound;
+    }
+  }
+  const TriangleMeshDistance::Nearest& best() const { return best_; }
+  uint32_t best_piece() const { return best_piece_; }
+
+ private:
+  const Eigen::Vector3d& point_;
+  double largest_radius_;
+  const std::vector<std::array<Eigen::Vector3d, 3>>& corners_;
+  const std::vector<int32_t>& source_triangle_;
+  const std::vector<double>& radius_;
+  TriangleMeshDistance::Nearest best_;
+  uint32_t best_piece_ = std::numeric_limits<uint32_t>::max();
+  double bound_squared_ = std::numeric_limits<double>::infinity();
+};
+
+/// The piece nearest to this thread's last query of an index (queries come along strands,
+/// so the next answer is usually that piece or one beside it): the search starts from
+/// it, with its distance as the bound from the first node on.
+struct LastNearest {
+  const void* index = nullptr;
+  uint32_t piece = 0;
+};
+thread_local LastNearest last_nearest;
+
+}  // namespace
+
 TriangleMeshDistance::Nearest TriangleMeshDistance::nearest(const Eigen::Vector3d& point) const {
-  Nearest best;
-  best.distance = std::numeric_limits<double>::infinity();
-  auto consider = [&](uint32_t piece) {
-    const auto& c = index_->corners[piece];
-    Eigen::Vector3d closest = closest_point_on_triangle(point, c[0], c[1], c[2]);
-    double distance = (closest - point).norm();
-    int32_t id = index_->source_triangle[piece];
-    if (distance < best.distance || (distance == best.distance && id < best.triangle))
-      best = {distance, id, closest};
-  };
-  size_t count = index_->candidate_count;
-  std::vector<uint32_t> ids(count);
-  std::vector<double> squared(count);
-  count = index_->tree->knnSearch(point.data(), count, ids.data(), squared.data());
-  for (size_t i = 0; i < count; ++i) consider(ids[i]);
-  // No triangle nearer than `best` has its centroid farther than this.
-  double bound = best.distance + index_->largest_radius;
-  std::vector<std::pair<uint32_t, double>> within;
-  nanoflann::SearchParams params;
-  params.sorted = false;
-  index_->tree->radiusSearch(point.data(), bound * bound, within, params);
-  for (const auto& [piece, squared_distance] : within) consider(piece);
-  return best;
+  NearestPiece nearest(point, index_->largest_radius, index_->corners, index_->source_triangle,
+                       index_->radius);
+  // (An index made where a destroyed one was may see its piece: any piece is a valid start.)
+  if (last_nearest.index == index_.get() && last_nearest.piece < index_->corners.size())
+    nearest.consider(last_nearest.piece);
+  index_->tree->findNeighbors(nearest, point.data(), nanoflann::SearchParams());
+  last_nearest = {index_.get(), nearest.best_piece()};
+  return nearest.best();
 }
 
 namespace {

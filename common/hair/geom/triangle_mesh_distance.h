@@ -11,18 +11,17 @@ namespace hair {
 /// Row-major n x 3 int32 triangle vertex ids.
 using Triangles3i = Eigen::Matrix<int32_t, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
-/// Exact unsigned distance from points to a triangle mesh. A k-d tree (nanoflann) over
-/// triangle centroids proposes the `candidate_count` nearest triangles; their nearest
-/// distance d bounds the answer, and every triangle whose centroid lies within d + R
-/// (R: the largest distance from a triangle's centroid to its corners) is then checked
-/// too, since no other triangle can be nearer. Triangles over twice the median size are
-/// indexed as pieces (split at their edge midpoints) so that R stays small.
+/// Exact unsigned distance from points to a triangle mesh. One pass of a k-d tree
+/// (nanoflann) over triangle centroids, nearest first, tests each triangle it meets; with
+/// d the nearest distance so far, only centroids within d + R are searched on (R: the
+/// largest distance from a triangle's centroid to its corners), since no other triangle
+/// can be nearer. Triangles over twice the median size are indexed as pieces (split at
+/// their edge midpoints) so that R stays small.
 class TriangleMeshDistance {
  public:
   /// @param vertices   #V x 3 positions
   /// @param triangles  #T x 3 vertex ids (non-empty)
-  TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles,
-                       int candidate_count = 4);
+  TriangleMeshDistance(const Points3f& vertices, const Triangles3i& triangles);
   ~TriangleMeshDistance();
   TriangleMeshDistance(TriangleMeshDistance&&) noexcept;
   TriangleMeshDistance& operator=(TriangleMeshDistance&&) noexcept;

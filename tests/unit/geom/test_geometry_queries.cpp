@@ -34,6 +34,41 @@ TEST(TriangleMeshDistance, MatchesBruteForceOnABody) {
   }
 }
 
+TEST(TriangleMeshDistance, TheAnswerDoesNotDependOnTheQueriesBefore) {
+  // Each thread's search starts from the piece its last query of the index found; the
+  // answer must be the nearest triangle whatever that was: the same query after a query
+  // far away, after queries of another mesh, in a reversed order, and on another thread.
+  PolyMesh body = testing::snowman_body();
+  Triangles3i triangles = fan_triangulation(body.face_offsets, body.face_vertices);
+  TriangleMeshDistance distance(body.vertices, triangles);
+  PolyMesh strip = testing::hair_strip({{0, 1.8, 0}, {0, 1.7, 0.1}, {0, 1.6, 0.2}},
+                                       Eigen::Vector3d::UnitX(), 0.02, {});
+  TriangleMeshDistance other(strip.vertices,
+                             fan_triangulation(strip.face_offsets, strip.face_vertices));
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 150; ++i)
+    points.emplace_back(0.5 * unit(random), 1.35 + 0.6 * unit(random), 0.5 * unit(random));
+  std::vector<TriangleMeshDistance::Nearest> in_order;
+  for (const Eigen::Vector3d& p : points) in_order.push_back(distance.nearest(p));
+  auto expect_same = [&](size_t i, const TriangleMeshDistance::Nearest& n) {
+    EXPECT_EQ(n.distance, in_order[i].distance) << i;
+    EXPECT_EQ(n.triangle, in_order[i].triangle) << i;
+    EXPECT_EQ(n.closest_point, in_order[i].closest_point) << i;
+  };
+  for (size_t i = points.size(); i-- > 0;) expect_same(i, distance.nearest(points[i]));
+  for (size_t i = 0; i < points.size(); ++i) {
+    other.nearest(points[(i * 37) % points.size()]);
+    distance.nearest(points[(i * 53 + 7) % points.size()]);
+    expect_same(i, distance.nearest(points[i]));
+  }
+  std::vector<TriangleMeshDistance::Nearest> threaded(points.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (size_t i = 0; i < points.size(); ++i) threaded[i] = distance.nearest(points[i]);
+  for (size_t i = 0; i < points.size(); ++i) expect_same(i, threaded[i]);
+}
+
 TEST(TriangleMeshDistance, ClosestPointOnTriangleRegions) {
   Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
   EXPECT_TRUE(
