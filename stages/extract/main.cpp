@@ -50,11 +50,12 @@ int main(int argc, char** argv) {
     spdlog::info(
         "{}: rails chosen by chain length in {} regions, texture axis {}, painted flow {} "
         "({} of them across the longer chains), across rings round the head {}; {} patches "
-        "traced along the paint",
+        "traced along the paint ({} of them tubes; {} tubes on the head kept on their rails, "
+        "the strokes painted round them)",
         hair_path, stats.regions_by_along_rule[0], stats.regions_by_along_rule[1],
         stats.regions_by_along_rule[2], stats.regions_turned_by_paint,
-        stats.regions_by_along_rule[3],
-        stats.patches_traced_along_paint);
+        stats.regions_by_along_rule[3], stats.patches_traced_along_paint,
+        stats.tubes_traced_along_paint, stats.tubes_kept_on_rails);
     if (const int64_t painted = result.painted_flow.painted_face_count(); painted > 0) {
       int64_t segments = 0;
       const double along = hair::painted_flow_agreement(

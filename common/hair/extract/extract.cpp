@@ -20,6 +20,7 @@
 #include "hair/extract/region_rails.h"
 #include "hair/extract/scalp.h"
 #include "hair/extract/streamline_orientation.h"
+#include "hair/extract/tube_streamlines.h"
 #include "hair/mesh/mesh_checks.h"
 #include "hair/mesh/mesh_patches.h"
 #include "hair/mesh/quad_recovery.h"
@@ -70,6 +71,44 @@ std::pair<Points3f, OrientationDecision> triangle_soup_strand(
       *decide_orientation(evidence, thresholds, MeshConventions{false, std::nullopt});
   if (decision.reverse) polyline = polyline.colwise().reverse().eval();
   return {std::move(polyline), decision};
+}
+
+/// The diagonal of the bounding box of the vertices of `faces`.
+double patch_extent(const PolyMesh& mesh, std::span<const int64_t> faces) {
+  Eigen::Vector3f low = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector3f high = -low;
+  for (int64_t face : faces)
+    for (int32_t v : mesh.face(face)) {
+      low = low.cwiseMin(mesh.vertices.row(v).transpose());
+      high = high.cwiseMax(mesh.vertices.row(v).transpose());
+    }
+  return faces.empty() ? 0.0 : static_cast<double>((high - low).norm());
+}
+
+/// Tubes whose traced streamlines are not hair (tube_streamlines.h: a braid piece's strokes
+/// wound round it) keep their rails: their tracing is dropped from `traced`.
+void keep_braid_pieces_on_their_rails(
+    const PolyMesh& mesh, const MeshPatches& patches, const std::vector<PatchTopology>& topologies,
+    const std::vector<std::vector<int>>& along, const ExtractParams& params,
+    std::vector<std::optional<std::vector<PaintedStreamline>>>& traced, ExtractStats& stats) {
+  TubeStreamlineLimits limits;
+  limits.max_extent_ratio = params.streamline_tube_max_extent_ratio;
+  limits.min_length_share = params.streamline_tube_min_length_share;
+  for (int32_t p = 0; p < patches.patch_count(); ++p) {
+    auto& streamlines = traced[static_cast<size_t>(p)];
+    if (!streamlines || patch_kind(topologies[p], along[p]) != PatchKind::tube) continue;
+    double rails_m = 0;
+    for (size_t r = 0; r < topologies[p].regions.size(); ++r)
+      rails_m += topologies[p].regions[r].families[along[p][r]].mean_chain_length;
+    rails_m /= static_cast<double>(std::max<size_t>(1, topologies[p].regions.size()));
+    if (tube_streamlines_are_hair(*streamlines, patch_extent(mesh, patches.patch_faces[p]), rails_m,
+                                  limits)) {
+      ++stats.tubes_traced_along_paint;
+    } else {
+      ++stats.tubes_kept_on_rails;
+      streamlines.reset();
+    }
+  }
 }
 
 /// Median length of the edges of `faces`.
@@ -258,10 +297,11 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
 
   // Patches whose rails would cross the paint are cut into strands along it instead;
   // their rails still take part in deciding directions, and orient the strands. Only
-  // patches lying on the head are traced (caps and wigs, whose texture is unwrapped in
-  // fans while their quads run in rings); cards, tubes and braid pieces hanging off it
-  // keep their rails: the strokes painted on a braid's pieces twist around them, while
-  // the bundle runs along the piece.
+  // patches lying on the head are traced (caps, wigs and shells, whose texture is
+  // unwrapped in fans while their quads run in rings); cards and braid pieces hanging off
+  // it keep their rails. A tube on the head (a shell, or a braid piece of a cornrow) is
+  // traced only where its streamlines are hair: the strokes painted round a braid's
+  // pieces twist around them, while the bundle runs along the piece.
   std::vector<std::optional<std::vector<PaintedStreamline>>> traced(topologies.size());
   std::vector<std::optional<double>> rails_along_share(topologies.size());
   for (int32_t p = 0; p < patches.patch_count(); ++p)
@@ -269,8 +309,7 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
         rails_along_paint_share(topologies[p], paint[p], along[p], params);
 #pragma omp parallel for schedule(dynamic)
   for (int32_t p = 0; p < patches.patch_count(); ++p)
-    if (patch_kind(topologies[p], along[p]) != PatchKind::tube &&
-        rails_along_share[static_cast<size_t>(p)] &&
+    if (rails_along_share[static_cast<size_t>(p)] &&
         *rails_along_share[static_cast<size_t>(p)] < params.streamline_max_along_share &&
         lies_on_the_head(result.hair_mesh, patches.patch_faces[p], head_distance,
                          params.streamline_max_head_distance_h * head_height_m)) {
@@ -281,6 +320,8 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
       traced[p] = painted_streamlines(result.hair_mesh, result.painted_flow,
                                       patches.patch_faces[p], streamline_params);
     }
+  keep_braid_pieces_on_their_rails(result.hair_mesh, patches, topologies, along, params, traced,
+                                   result.stats);
   for (int32_t p = 0; p < patches.patch_count(); ++p)
     if (traced[static_cast<size_t>(p)]) {
       ++result.stats.patches_traced_along_paint;

@@ -53,6 +53,13 @@ struct ExtractParams {
   /// ...when it lies on the head: the median distance of its vertices from the head at
   /// most this, in H (caps and wigs; hanging cards and braid pieces keep their rails).
   double streamline_max_head_distance_h = 0.1;
+  /// A tube lying on the head is traced like a cap only where its streamlines are hair
+  /// (tube_streamlines.h): the longest at most this many times the patch's extent (longer
+  /// ones wind round a braid piece)...
+  double streamline_tube_max_extent_ratio = 3;
+  /// ...and their mean length at least this share of its rails' (the strokes of a braid's
+  /// lobes turn within a few faces).
+  double streamline_tube_min_length_share = 0.5;
   /// Mean fall of the painted alpha along a region's rails, per face crossed (alpha
   /// 0 to 1), from which the fade decides root from tip (OrientationRule::alpha_fade).
   double alpha_fade_min_fall = 0.05;
@@ -132,6 +139,9 @@ struct ExtractStats {
   int64_t regions_turned_by_paint = 0;
   /// Patches cut into strands along the paint (their rails crossed it).
   int64_t patches_traced_along_paint = 0;
+  /// Of them, tubes (shells meshed as tubes); and tubes on the head whose streamlines
+  /// wound round them or came out short (braid pieces), which keep their rails.
+  int64_t tubes_traced_along_paint = 0, tubes_kept_on_rails = 0;
   std::array<int64_t, 5> groups_by_kind{};  ///< indexed by PatchKind
   bool vertex_order_trusted = true;
   int uv_growth_sign = 0;  ///< the mesh's texture convention: +1, -1, or 0 for none

@@ -70,6 +70,15 @@ void declare_reading_and_paint_params(ParamSet& params, ExtractStageParams& valu
              "at most this, in H (caps and wigs; hanging cards and braid pieces keep their "
              "rails)",
              ParamRange::at_least(0));
+  params.add("streamline_tube_max_extent_ratio", p.streamline_tube_max_extent_ratio,
+             "...a tube among them (quads closed on themselves across the rails: a shell, or "
+             "a braid piece) only where its longest streamline is at most this many times "
+             "the patch's extent (the strokes painted round a braid piece wind round it)...",
+             ParamRange::at_least(0));
+  params.add("streamline_tube_min_length_share", p.streamline_tube_min_length_share,
+             "...and its streamlines' mean length at least this share of its rails' (a "
+             "braid's lobes turn the strokes within a few faces)",
+             ParamRange::at_least(0));
   params.add("alpha_fade_min_fall", p.alpha_fade_min_fall,
              "mean fall of the painted alpha along a region's rails (0 to 1 across a face) "
              "from which the fade tells root from tip",
