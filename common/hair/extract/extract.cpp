@@ -297,11 +297,9 @@ ExtractResult extract_strands(PolyMesh hair_mesh, PolyMesh body_mesh, const Extr
 
   // Patches whose rails would cross the paint are cut into strands along it instead;
   // their rails still take part in deciding directions, and orient the strands. Only
-  // patches lying on the head are traced (caps, wigs and shells, whose texture is
-  // unwrapped in fans while their quads run in rings); cards and braid pieces hanging off
-  // it keep their rails. A tube on the head (a shell, or a braid piece of a cornrow) is
-  // traced only where its streamlines are hair: the strokes painted round a braid's
-  // pieces twist around them, while the bundle runs along the piece.
+  // patches on the head are traced (caps, wigs and shells, their quads in rings); cards and
+  // braid pieces hanging off it keep their rails, and so does a tube on the head whose
+  // streamlines are not hair (a cornrow's pieces, with strokes painted round them).
   std::vector<std::optional<std::vector<PaintedStreamline>>> traced(topologies.size());
   std::vector<std::optional<double>> rails_along_share(topologies.size());
   for (int32_t p = 0; p < patches.patch_count(); ++p)
