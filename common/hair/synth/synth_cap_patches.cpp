@@ -96,15 +96,17 @@ std::vector<std::vector<GridVertex>> grid_vertices(const std::vector<Stream>& st
 }
 
 /// The faces of `grid` whose corners all lie in the hair's region, row by row from the
-/// crown: triangles round the pole, quads below; their corners point into `grid`.
-std::vector<std::vector<GridVertex*>> faces_in_hair(std::vector<std::vector<GridVertex>>& grid) {
+/// crown from row `first_row` on: triangles round the pole (row 0), quads below; their
+/// corners point into `grid`.
+std::vector<std::vector<GridVertex*>> faces_in_hair(std::vector<std::vector<GridVertex>>& grid,
+                                                    int first_row) {
   const auto rows = static_cast<int>(grid.size());
   auto kept = [](const std::vector<GridVertex*>& corners) {
     return std::all_of(corners.begin(), corners.end(),
                        [](const GridVertex* corner) { return corner->in_hair; });
   };
   std::vector<std::vector<GridVertex*>> faces;
-  for (int r = 0; r + 1 < rows; ++r)
+  for (int r = first_row; r + 1 < rows; ++r)
     for (int c = 0; c < kGridColumns; ++c) {
       auto& upper = grid[static_cast<size_t>(r)];
       auto& lower = grid[static_cast<size_t>(r + 1)];
@@ -180,13 +182,16 @@ SynthPatch build_ring_patch(const std::vector<Stream>& streams,
 SynthPatch build_grid_patch(const std::vector<Stream>& streams,
                             const std::vector<int32_t>& stream_ids, const DefectSpec& defects,
                             const Head& head, std::vector<float>& positions, PolyMesh& mesh,
-                            std::vector<float>& uv, std::vector<float>& vertex_along_m) {
+                            std::vector<float>& uv, std::vector<float>& vertex_along_m,
+                            double crown_hole_deg) {
   SynthPatch patch;
   patch.stream = stream_ids.front();
   patch.style = HairStyle::short_hair;
   patch.type = GroupType::root_free;
   const auto count = static_cast<int>(stream_ids.size());
   patch.rails = count;
+  const double row_deg = defects.segment_length_m / head.radius_m * 180.0 / kPi;
+  const int first_row = crown_hole_deg > 0 ? static_cast<int>(std::ceil(crown_hole_deg / row_deg)) : 0;
   double longest = 0;
   for (int32_t id : stream_ids)
     longest = std::max(longest, streams[static_cast<size_t>(id)].length_m());
@@ -205,7 +210,7 @@ SynthPatch build_grid_patch(const std::vector<Stream>& streams,
   };
   // The faces kept, then their vertices numbered row by row from the crown, round each
   // row from the face (azimuth 0), as a modelling tool numbers a sphere's.
-  const std::vector<std::vector<GridVertex*>> faces = faces_in_hair(grid);
+  const std::vector<std::vector<GridVertex*>> faces = faces_in_hair(grid, first_row);
   for (auto& row : grid)
     for (GridVertex& vertex : row)
       for (const auto& corners : faces)

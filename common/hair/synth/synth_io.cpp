@@ -108,6 +108,7 @@ nlohmann::ordered_json spec_json(const HairStyleSpec& spec) {
     item["swirl_max_deg"] = c.swirl_max_deg;
     item["one_piece_rings"] = c.one_piece_rings;
     item["one_piece_grid"] = c.one_piece_grid;
+    item["grid_crown_hole_deg"] = c.grid_crown_hole_deg;
     item["bun_radius_m"] = c.bun_radius_m;
     item["ringlet_radius_m"] = c.ringlet_radius_m;
     item["ringlet_pitch_m"] = c.ringlet_pitch_m;
@@ -207,6 +208,7 @@ ComponentSpec component_from_json(const nlohmann::json& item, const std::string&
                       "swirl_max_deg",
                       "one_piece_rings",
                       "one_piece_grid",
+                      "grid_crown_hole_deg",
                       "bun_radius_m",
                       "ringlet_radius_m",
                       "ringlet_pitch_m",
@@ -255,6 +257,7 @@ ComponentSpec component_from_json(const nlohmann::json& item, const std::string&
   read_key(item, where, "swirl_max_deg", c.swirl_max_deg);
   read_key(item, where, "one_piece_rings", c.one_piece_rings);
   read_key(item, where, "one_piece_grid", c.one_piece_grid);
+  read_key(item, where, "grid_crown_hole_deg", c.grid_crown_hole_deg);
   read_key(item, where, "bun_radius_m", c.bun_radius_m);
   read_key(item, where, "ringlet_radius_m", c.ringlet_radius_m);
   read_key(item, where, "ringlet_pitch_m", c.ringlet_pitch_m);
@@ -361,6 +364,7 @@ void check_spec(const HairStyleSpec& spec) {
     require_range(where + "swirl_min_deg", c.swirl_min_deg, 0, c.swirl_max_deg);
     if (c.one_piece_rings && c.one_piece_grid)
       throw Error::usage(where + "one_piece_rings and one_piece_grid: a cap is meshed one way");
+    require_range(where + "grid_crown_hole_deg", c.grid_crown_hole_deg, 0, 90);
     require_range(where + "bun_radius_m", c.bun_radius_m, 0, 0.1);
     require_range(where + "ringlet_radius_m", c.ringlet_radius_m, 0, 0.05);
     require_range(where + "ringlet_pitch_m", c.ringlet_pitch_m, 0.005, 0.5);

@@ -103,7 +103,8 @@ SynthModel generate_model(const HairStyleSpec& spec, const PolyMesh& body_m, uin
     if (ids.empty()) continue;
     model.patches.push_back(spec.components[c].one_piece_grid
                                 ? build_grid_patch(streams, ids, spec.defects, head, positions,
-                                                   model.mesh, uv, model.vertex_along_m)
+                                                   model.mesh, uv, model.vertex_along_m,
+                                                   spec.components[c].grid_crown_hole_deg)
                                 : build_ring_patch(streams, ids, spec.defects, head, rng, positions,
                                                    model.mesh, uv, model.vertex_along_m));
   }

@@ -81,6 +81,11 @@ struct ComponentSpec {
   /// the paint says where it goes. Its roots, as for one_piece_rings, lie polar_min_deg
   /// from the whorl. Not with one_piece_rings.
   bool one_piece_grid = false;
+  /// one_piece_grid: above 0, the grid leaves out the rows of faces that start within this
+  /// polar angle of the crown, so that the shell is open there and its latitudes close
+  /// round the head: quads closed on themselves, a tube (shells modelled so, as Elvaerwyn's
+  /// short men's cut).
+  double grid_crown_hole_deg = 0.0;
   /// Ponytail: above 0, the tail is coiled round the band into a bun of this radius,
   /// lying against the head, each stream from its own side of the band (an up-do);
   /// the coil is fixed hair, as the cap is.

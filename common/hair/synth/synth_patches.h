@@ -62,10 +62,13 @@ SynthPatch build_ring_patch(const std::vector<Stream>& streams,
 /// over the longest stream's length and u runs round the streams (the nearest stream's
 /// index plus how far the point lies towards the next nearest neighbour, over the stream
 /// count), so that the painted strokes, along v, follow the streams. Vertex ids run row by
-/// row from the crown.
+/// row from the crown. With `crown_hole_deg` above 0, the faces of the rows that start
+/// within that polar angle of the crown are left out: the shell is open at the crown and
+/// its latitudes close round the head (quads closed on themselves: a tube).
 SynthPatch build_grid_patch(const std::vector<Stream>& streams,
                             const std::vector<int32_t>& stream_ids, const DefectSpec& defects,
                             const Head& head, std::vector<float>& positions, PolyMesh& mesh,
-                            std::vector<float>& uv, std::vector<float>& vertex_along_m);
+                            std::vector<float>& uv, std::vector<float>& vertex_along_m,
+                            double crown_hole_deg = 0);
 
 }  // namespace hair::synth

@@ -182,6 +182,41 @@ TEST(SynthPainted, ASwirlingCapMeshedInAGridIsTracedAlongItsPaint) {
   }
 }
 
+TEST(SynthPainted, AShellMeshedAsATubeIsTracedAlongItsPaint) {
+  // swirl_shell: swirl_cap's grid open at the crown, so that its latitudes close round the
+  // head and extract reads the patch as a tube (as the corpus's elv_maxwell). Neither family
+  // of its edges runs with the swirling hair. Traced along its paint, its streamlines are
+  // hair (none winds round the shell), and the input strands follow the truth; kept on its
+  // rails, as every tube was before, they cross it.
+  const PolyMesh body = sample_body_m();
+  for (uint32_t seed : {1u, 2u, 3u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    SynthModel model = generate_model(varied_spec(preset("swirl_shell"), seed), body, seed);
+    ASSERT_EQ(model.patches.size(), 1u);  // one piece
+    const PaintedTextures textures =
+        load_painted_textures(model.mesh.materials, ExtractParams{}.painted_flow, model.name);
+    const ExtractResult traced =
+        extract_strands(model.mesh, body, ExtractParams{}, model.name, "body", textures);
+    ASSERT_EQ(traced.group_kind.size(), 1u);
+    EXPECT_EQ(traced.group_kind.front(), PatchKind::tube);
+    EXPECT_EQ(traced.stats.tubes_traced_along_paint, 1);
+    ExtractParams tubes_on_rails;
+    tubes_on_rails.streamline_tube_max_extent_ratio = 0;  // no tube's streamlines are hair
+    const ExtractResult on_rails =
+        extract_strands(model.mesh, body, tubes_on_rails, model.name, "body", textures);
+    EXPECT_EQ(on_rails.stats.tubes_kept_on_rails, 1);
+    const AgainstTruth with = against_truth(traced.strands, model.strands);
+    const AgainstTruth without = against_truth(on_rails.strands, model.strands);
+    std::printf(
+        "[ painted  ] swirl_shell seed %u: along the truth %5.1f%% traced (on its rails "
+        "%5.1f%%), right way %5.1f%% of %lld strands\n",
+        seed, 100 * with.along_share, 100 * without.along_share, 100 * with.right_way_share,
+        static_cast<long long>(with.strands));
+    EXPECT_GE(with.along_share, 0.95);
+    EXPECT_LT(without.along_share, with.along_share - 0.2);
+  }
+}
+
 TEST(SynthPainted, ACardsFadeAlongItsWholeLengthOverrulesItsIdsHoweverFinelyItIsCut) {
   // hair-synth's low tail at seed 3: three cards whose vertex ids run tip to root (the
   // reversed defect) and whose paint fades to their tips by 0.76-0.81 from end to end.
