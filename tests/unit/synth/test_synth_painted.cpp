@@ -71,13 +71,19 @@ AgainstTruth against_truth(const StrandSet& input, const StrandSet& truth) {
   return result;
 }
 
-AgainstTruth extract_against_truth(const SynthModel& model, const PolyMesh& body, bool textured,
-                                   const ExtractParams& params = {},
-                                   int64_t* paint_overruled_ids = nullptr) {
+/// extract on the model's mesh, with its textures or without them.
+ExtractResult extract_model(const SynthModel& model, const PolyMesh& body, bool textured,
+                            const ExtractParams& params = {}) {
   PaintedTextures textures =
       textured ? load_painted_textures(model.mesh.materials, params.painted_flow, model.name)
                : PaintedTextures{};
-  ExtractResult result = extract_strands(model.mesh, body, params, model.name, "body", textures);
+  return extract_strands(model.mesh, body, params, model.name, "body", textures);
+}
+
+AgainstTruth extract_against_truth(const SynthModel& model, const PolyMesh& body, bool textured,
+                                   const ExtractParams& params = {},
+                                   int64_t* paint_overruled_ids = nullptr) {
+  ExtractResult result = extract_model(model, body, textured, params);
   if (paint_overruled_ids) *paint_overruled_ids = result.stats.paint_overruled_ids;
   return against_truth(result.strands, model.strands);
 }
@@ -164,10 +170,7 @@ TEST(SynthPainted, ASwirlingCapMeshedInAGridIsTracedAlongItsPaint) {
     SynthModel model = generate_model(varied_spec(preset("swirl_cap"), seed), body, seed);
     ASSERT_EQ(model.patches.size(), 1u);  // one piece
     EXPECT_GT(model.mesh.face_count(), 150);
-    const PaintedTextures textures =
-        load_painted_textures(model.mesh.materials, ExtractParams{}.painted_flow, model.name);
-    const ExtractResult result =
-        extract_strands(model.mesh, body, ExtractParams{}, model.name, "body", textures);
+    const ExtractResult result = extract_model(model, body, true);
     EXPECT_EQ(result.stats.patches_traced_along_paint, 1);
     const AgainstTruth with = against_truth(result.strands, model.strands);
     const AgainstTruth without = extract_against_truth(model, body, false);
@@ -193,17 +196,13 @@ TEST(SynthPainted, AShellMeshedAsATubeIsTracedAlongItsPaint) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     SynthModel model = generate_model(varied_spec(preset("swirl_shell"), seed), body, seed);
     ASSERT_EQ(model.patches.size(), 1u);  // one piece
-    const PaintedTextures textures =
-        load_painted_textures(model.mesh.materials, ExtractParams{}.painted_flow, model.name);
-    const ExtractResult traced =
-        extract_strands(model.mesh, body, ExtractParams{}, model.name, "body", textures);
+    const ExtractResult traced = extract_model(model, body, true);
     ASSERT_EQ(traced.group_kind.size(), 1u);
     EXPECT_EQ(traced.group_kind.front(), PatchKind::tube);
     EXPECT_EQ(traced.stats.tubes_traced_along_paint, 1);
     ExtractParams tubes_on_rails;
     tubes_on_rails.streamline_tube_max_extent_ratio = 0;  // no tube's streamlines are hair
-    const ExtractResult on_rails =
-        extract_strands(model.mesh, body, tubes_on_rails, model.name, "body", textures);
+    const ExtractResult on_rails = extract_model(model, body, true, tubes_on_rails);
     EXPECT_EQ(on_rails.stats.tubes_kept_on_rails, 1);
     const AgainstTruth with = against_truth(traced.strands, model.strands);
     const AgainstTruth without = against_truth(on_rails.strands, model.strands);
@@ -268,11 +267,7 @@ TEST(SynthPainted, TheTextureFadesTowardsTheTipsAndIsWrittenBesideTheMesh) {
 /// Share of a model's groups that extract orients root to tip (groups spanning patches
 /// left out), with its painted texture read or not.
 double groups_right_way(const SynthModel& model, const PolyMesh& body, bool textured) {
-  ExtractParams params;
-  PaintedTextures textures =
-      textured ? load_painted_textures(model.mesh.materials, params.painted_flow, model.name)
-               : PaintedTextures{};
-  ExtractResult extract = extract_strands(model.mesh, body, params, model.name, "body", textures);
+  ExtractResult extract = extract_model(model, body, textured);
   std::vector<int32_t> patch_of = group_patches(model, extract);
   std::vector<GroupOrientation> orientation = group_orientations(model, extract, patch_of);
   int64_t judged = 0, right = 0;
