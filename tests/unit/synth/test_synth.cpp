@@ -616,6 +616,13 @@ TEST(SynthSpec, JsonRoundTripsEveryPresetAndRefusesBadKnobs) {
   json = spec_json(preset("bun"));
   json["components"][0]["bun_radius_m"] = -0.01;
   EXPECT_THROW(spec_from_json(json), hair::Error);
+  // A shell open at the crown: its hole round-trips and stays within 90 degrees.
+  json = spec_json(preset("swirl_shell"));
+  EXPECT_EQ(json["components"][0]["grid_crown_hole_deg"], 12.0);
+  json["components"][0]["grid_crown_hole_deg"] = 95.0;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
+  json["components"][0]["grid_crown_hole_deg"] = -1.0;
+  EXPECT_THROW(spec_from_json(json), hair::Error);
   // A loose cap: its volume round-trips and stays within 10 cm.
   json = spec_json(preset("low_tail"));
   EXPECT_EQ(json["components"][0]["cap_volume_m"], 0.0);
