@@ -175,13 +175,17 @@ class FirstWithin {
   using DistanceType = double;
   using IndexType = uint32_t;
   FirstWithin(const Eigen::Vector3d& point, double radius, double bound,
-              const std::vector<std::array<Eigen::Vector3d, 3>>& corners)
-      : point_(point), radius_(radius), bound_squared_(bound * bound), corners_(corners) {}
+              const std::vector<std::array<Eigen::Vector3d, 3>>& corners,
+              const std::vector<double>& piece_radius)
+      : point_(point), radius_(radius), bound_squared_(bound * bound), corners_(corners),
+        piece_radius_(piece_radius) {}
   bool full() const { return true; }
   size_t size() const { return found_ ? 1 : 0; }
   double worstDist() const { return bound_squared_; }
   bool addPoint(double squared_distance, uint32_t piece) {
     if (squared_distance >= bound_squared_) return true;
+    // No point of the piece is nearer than its centroid less its own radius.
+    if (std::sqrt(squared_distance) - piece_radius_[piece] > radius_) return true;
     const auto& c = corners_[piece];
     found_ = (closest_point_on_triangle(point_, c[0], c[1], c[2]) - point_).norm() <= radius_;
     return !found_;  // stop at the first
@@ -192,13 +196,15 @@ class FirstWithin {
   const Eigen::Vector3d& point_;
   double radius_, bound_squared_;
   const std::vector<std::array<Eigen::Vector3d, 3>>& corners_;
+  const std::vector<double>& piece_radius_;
   bool found_ = false;
 };
 
 }  // namespace
 
 bool TriangleMeshDistance::is_within(const Eigen::Vector3d& point, double radius) const {
-  FirstWithin first(point, radius, radius + index_->largest_radius, index_->corners);
+  FirstWithin first(point, radius, radius + index_->largest_radius, index_->corners,
+                    index_->radius);
   index_->tree->radiusSearchCustomCallback(point.data(), first, nanoflann::SearchParams());
   return first.found();
 }
